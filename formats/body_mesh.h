@@ -1,0 +1,17 @@
+// Body (and other obstacle) meshes: anything assimp reads (OBJ, PLY, STL, glTF, ...), taken
+// to be in metres. All meshes of the file are merged, node transforms applied, polygons
+// triangulated and vertices at the same position welded.
+#pragma once
+
+#include <string>
+
+#include "mesh/primitive_meshes.h"
+
+namespace foldsketch {
+
+TriangleMesh read_body_mesh(const std::string& path);
+
+// Plain OBJ (v and f lines, exact numbers), written atomically.
+void write_mesh_obj(const TriangleMesh& mesh, const std::string& path);
+
+} // namespace foldsketch

@@ -1,0 +1,31 @@
+// Garments made of structured grid panels, for the sample scenes: each panel is a grid of
+// nodes with a pattern position and a drape position; panels are sewn wherever their drape
+// nodes coincide.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "garment/garment.h"
+
+namespace foldsketch {
+
+struct GridPanel {
+  std::string name;
+  // Node (i, j), i = column (pattern x grows with i), j = row (pattern y grows with j), is
+  // stored at index j * columns + i. columns, rows >= 2. Pattern cells must be
+  // counter-clockwise and the drape must keep that orientation seen from outside.
+  int columns = 0, rows = 0;
+  MatrixX2d pattern;  // columns*rows by 2 [m]
+  MatrixX3d drape;    // columns*rows by 3 [m]
+};
+
+// Triangulate every cell (diagonals alternating like a chequerboard, so the mesh has no
+// preferred shear direction) and weld drape nodes of all panels closer than weld_tolerance.
+Garment grid_garment(const std::vector<GridPanel>& panels, double weld_tolerance);
+
+// Lay the panels out side by side in pattern space, left to right in the given order with
+// `gap` between their bounding boxes, bottoms on y = 0. Panels keep their shape.
+void lay_out_patterns(std::vector<GridPanel>& panels, double gap);
+
+} // namespace foldsketch
