@@ -1,6 +1,8 @@
 // Body (and other obstacle) meshes: anything assimp reads (OBJ, PLY, STL, glTF, ...), taken
 // to be in metres. All meshes of the file are merged, node transforms applied, polygons
-// triangulated and vertices at the same position welded.
+// triangulated and vertices at the same position welded. assimp keeps single-precision
+// positions: coordinates are rounded to about 1e-7 relative (0.1 um on a body), far below any
+// contact thickness.
 #pragma once
 
 #include <string>

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <numeric>
@@ -233,7 +234,7 @@ Garment parse_garment_obj(std::istream& in, const std::string& path) { return Ob
 
 Garment read_garment_obj(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot open for reading");
+  if (!in) throw InputError(path, 0, std::filesystem::exists(path) ? "cannot open for reading" : "no such file");
   return parse_garment_obj(in, path);
 }
 

@@ -17,10 +17,19 @@ void load_xml(tinyxml2::XMLDocument& doc, const std::string& path) {
   text << in.rdbuf();
   const std::string s = text.str();
   if (doc.Parse(s.data(), s.size()) != tinyxml2::XML_SUCCESS) {
-    std::string message = doc.ErrorStr();
-    // tinyxml2 prefixes its own "Error=... ErrorID=... Line number=N:" noise; keep the detail.
-    if (const auto colon = message.rfind(": "); colon != std::string::npos) message = message.substr(colon + 2);
-    throw InputError(path, doc.ErrorLineNum(), "malformed XML (" + std::string(doc.ErrorName()) + "): " + message);
+    // tinyxml2's ErrorStr() reads "Error=NAME ErrorID=N (0xN) Line number=L[: detail]"; keep
+    // the detail, or say plainly what the error name means.
+    const std::string full = doc.ErrorStr();
+    const auto colon = full.find(": ");
+    std::string detail = colon != std::string::npos ? full.substr(colon + 2) : std::string(doc.ErrorName());
+    switch (doc.ErrorID()) {
+      case tinyxml2::XML_ERROR_EMPTY_DOCUMENT: detail = "the file is empty"; break;
+      case tinyxml2::XML_ERROR_PARSING_ELEMENT: detail = "an element is not closed (missing '>' or '/>'?)"; break;
+      case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE: detail = "bad attribute (missing '=' or quotes?)"; break;
+      case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT: detail = "a closing tag does not match its opening tag"; break;
+      default: break;
+    }
+    throw InputError(path, doc.ErrorLineNum(), "malformed XML: " + detail);
   }
 }
 

@@ -1,0 +1,39 @@
+// Helpers shared by the tests: hand-built garments, paths, running the real tools.
+#pragma once
+
+#include <string>
+
+#include "garment/garment.h"
+
+namespace foldsketch::test {
+
+// Repository, built tools and ../shared, as configured by CMake.
+std::string source_path(const std::string& relative);
+std::string tool_path(const std::string& tool);
+std::string shared_path(const std::string& relative);
+bool shared_available();
+
+// A fresh empty folder under the system temp folder, removed at process exit.
+std::string temp_folder();
+
+// A square panel of n x n cells of side `size` [m]; the drape is the pattern in the z = 0 plane.
+Garment square_panel(int n, double size = 1.0);
+
+// Two unit squares side by side, sewn along their shared edge by welding: "left" and "right".
+Garment two_sewn_squares();
+
+// Volume enclosed by a closed triangle mesh (divergence theorem): positive iff the triangles
+// face outwards.
+double enclosed_volume(const MatrixX3d& V, const MatrixX3i& F);
+
+// Result of running a command: exit status, standard output and standard error.
+struct RunResult {
+  int status = -1;
+  std::string out, err;
+};
+RunResult run(const std::string& command);
+
+std::string read_text(const std::string& path);
+void write_text(const std::string& path, const std::string& text);
+
+} // namespace foldsketch::test
