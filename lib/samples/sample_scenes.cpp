@@ -183,11 +183,48 @@ double frustum_area(const EllipseRing& r0, const EllipseRing& r1) {
   return 0.5 * (ring_perimeter(r0) + ring_perimeter(r1)) * slant;
 }
 
-// Even column count and rows for a tube of frusta with about `triangles` triangles.
-int tube_columns(const std::vector<std::pair<EllipseRing, EllipseRing>>& frusta, double h) {
-  double perimeter = 0.0;
-  for (const auto& [lo, hi] : frusta) perimeter += 0.5 * (ring_perimeter(lo) + ring_perimeter(hi));
-  return 2 * divisions(perimeter / frusta.size() / 2, h);
+// One tier of a fitted garment: the frustum between two rings, cut into a front and a back
+// panel at the side seams (phi = 0 and pi).
+struct Tier {
+  std::string suffix;  // panel names are "front" + suffix and "back" + suffix
+  EllipseRing lower, upper;
+};
+
+// Front and back panels of every tier, sharing one column layout so that tiers sew to each
+// other ring to ring, sized together to about params.triangles; pinned along the ring at pin_y.
+SampleScene fitted_garment(const std::string& name, const std::vector<Tier>& tiers, const SampleParams& params, double pin_y) {
+  double area = 0.0, perimeter = 0.0;
+  for (const Tier& t : tiers) {
+    area += frustum_area(t.lower, t.upper);
+    perimeter += 0.5 * (ring_perimeter(t.lower) + ring_perimeter(t.upper)) / static_cast<double>(tiers.size());
+  }
+  int columns = 0;
+  std::vector<int> rows(tiers.size());
+  double h = grid_spacing(area, params.triangles);
+  for (int round = 0; round < kSizingRounds; ++round) {
+    columns = 2 * divisions(perimeter / 2, h);  // even: front and back get half each
+    int cells = 0;
+    for (size_t t = 0; t < tiers.size(); ++t) {
+      rows[t] = divisions(tiers[t].upper.y - tiers[t].lower.y, h) + 1;
+      cells += columns * (rows[t] - 1);
+    }
+    h *= std::sqrt(2.0 * cells / params.triangles);
+  }
+  // Columns follow equal arcs of the first tier's top ring (the waist): rings of one cone are
+  // scaled copies, so the arcs are equal on every ring of the garment.
+  const std::vector<double> phis = equal_arc_angles(tiers.front().upper, columns, 0.0);
+  std::vector<GridPanel> panels;
+  for (size_t t = 0; t < tiers.size(); ++t) {
+    panels.push_back(cone_panel("front" + tiers[t].suffix, tiers[t].lower, tiers[t].upper, phis, columns / 2, columns, rows[t]));
+    panels.push_back(cone_panel("back" + tiers[t].suffix, tiers[t].lower, tiers[t].upper, phis, 0, columns / 2, rows[t]));
+  }
+  lay_out_patterns(panels, kLayoutGap);
+  SampleScene out;
+  out.garment = grid_garment(panels, kWeldTolerance);
+  out.scene = base_scene(name);
+  const double far = 10.0;
+  out.scene.pins.push_back(pin_box({-far, pin_y, -far}, {far, pin_y, far}));
+  return out;
 }
 
 SampleScene skirt(const SampleParams& params, const MatrixX3d& body) {
@@ -195,23 +232,7 @@ SampleScene skirt(const SampleParams& params, const MatrixX3d& body) {
   const EllipseRing& waist = fit.waist;
   const double y_hem = waist.y - params.waist_to_hem;
   const EllipseRing hem = scaled(waist, y_hem, cone_scale(fit, waist, y_hem, params.clearance, params.min_flare));
-  int columns = 0, rows = 0;
-  double h = grid_spacing(frustum_area(hem, waist), params.triangles);
-  for (int round = 0; round < kSizingRounds; ++round) {
-    columns = tube_columns({{hem, waist}}, h);
-    rows = divisions(params.waist_to_hem, h) + 1;
-    h *= std::sqrt(2.0 * columns * (rows - 1) / params.triangles);
-  }
-  const std::vector<double> phis = equal_arc_angles(waist, columns, 0.0);
-  std::vector<GridPanel> panels{cone_panel("front", hem, waist, phis, columns / 2, columns, rows),
-                                cone_panel("back", hem, waist, phis, 0, columns / 2, rows)};
-  lay_out_patterns(panels, kLayoutGap);
-  SampleScene out;
-  out.garment = grid_garment(panels, kWeldTolerance);
-  out.scene = base_scene("skirt");
-  const double far = 10.0;
-  out.scene.pins.push_back(pin_box({-far, waist.y, -far}, {far, waist.y, far}));
-  return out;
+  return fitted_garment("skirt", {{"", hem, waist}}, params, waist.y);
 }
 
 SampleScene dress(const SampleParams& params, const MatrixX3d& body) {
@@ -220,26 +241,7 @@ SampleScene dress(const SampleParams& params, const MatrixX3d& body) {
   const double y_hem = waist.y - params.dress_waist_to_hem, y_top = waist.y + params.bodice_height;
   const EllipseRing hem = scaled(waist, y_hem, cone_scale(fit, waist, y_hem, params.clearance, params.min_flare));
   const EllipseRing top = scaled(waist, y_top, cone_scale(fit, waist, y_top, params.clearance, 0.0));
-  int columns = 0, skirt_rows = 0, bodice_rows = 0;
-  double h = grid_spacing(frustum_area(hem, waist) + frustum_area(waist, top), params.triangles);
-  for (int round = 0; round < kSizingRounds; ++round) {
-    columns = tube_columns({{hem, waist}, {waist, top}}, h);
-    skirt_rows = divisions(params.dress_waist_to_hem, h) + 1;
-    bodice_rows = divisions(params.bodice_height, h) + 1;
-    h *= std::sqrt(2.0 * columns * (skirt_rows + bodice_rows - 2) / params.triangles);
-  }
-  const std::vector<double> phis = equal_arc_angles(waist, columns, 0.0);
-  std::vector<GridPanel> panels{cone_panel("front-skirt", hem, waist, phis, columns / 2, columns, skirt_rows),
-                                cone_panel("back-skirt", hem, waist, phis, 0, columns / 2, skirt_rows),
-                                cone_panel("front-bodice", waist, top, phis, columns / 2, columns, bodice_rows),
-                                cone_panel("back-bodice", waist, top, phis, 0, columns / 2, bodice_rows)};
-  lay_out_patterns(panels, kLayoutGap);
-  SampleScene out;
-  out.garment = grid_garment(panels, kWeldTolerance);
-  out.scene = base_scene("dress");
-  const double far = 10.0;
-  out.scene.pins.push_back(pin_box({-far, y_top, -far}, {far, y_top, far}));
-  return out;
+  return fitted_garment("dress", {{"-skirt", hem, waist}, {"-bodice", waist, top}}, params, y_top);
 }
 
 } // namespace
