@@ -1,0 +1,121 @@
+#include "sim/bending.h"
+
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+#include "sim/psd_projection.h"
+
+namespace foldsketch {
+namespace {
+using Vec9 = Eigen::Matrix<double, 9, 1>;
+using Mat9 = Eigen::Matrix<double, 9, 9>;
+using Eigen::Matrix3d;
+
+Matrix3d cross_matrix(const Vector3d& v) {
+  Matrix3d m;
+  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return m;
+}
+
+// Symmetric "a_i b_j + b_i a_j" placed in the 9x9 of (a, b, c) blocks.
+Mat9 sym_outer(const Vec9& u, const Vec9& v) { return u * v.transpose() + v * u.transpose(); }
+} // namespace
+
+// With a = x1 - x0 (the edge), b = x2 - x0, c = x3 - x0, the face normals are n1 = a x b and
+// n2 = c x a, and
+//   n1 . n2 = (a.c)(a.b) - (a.a)(b.c)            (Binet-Cauchy)
+//   (n1 x n2) . a / |a| = -det(a, b, c) |a|
+// so theta = atan2(y, x) with y = -det(a,b,c) |a| and x = (a.c)(a.b) - |a|^2 (b.c): both are
+// polynomials in a, b, c except |a|, and the derivatives follow by the chain rule.
+DihedralAngle dihedral_angle(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const Vector3d& x3,
+                             bool want_hessian) {
+  const Vector3d a = x1 - x0, b = x2 - x0, c = x3 - x0;
+  const double p = a.dot(b), q = a.dot(c), s = a.dot(a), t = b.dot(c);
+  const double L = std::sqrt(s);
+  const double D = a.dot(b.cross(c));
+  const double x = q * p - s * t;
+  const double y = -D * L;
+  const double r2 = x * x + y * y;
+  DihedralAngle out;
+  out.gradient.setZero();
+  out.hessian.setZero();
+  // r2 = |n1|^2 |n2|^2 |a|^2 up to sign conventions: zero when either triangle collapses.
+  if (!(r2 > 1e-300) || !(L > 0.0)) {
+    out.degenerate = true;
+    return out;
+  }
+  out.theta = std::atan2(y, x);
+
+  Vec9 gD, gL = Vec9::Zero(), gp, gq, gs = Vec9::Zero(), gt;
+  gD << b.cross(c), c.cross(a), a.cross(b);
+  gL.head<3>() = a / L;
+  gp << b, a, Vector3d::Zero();
+  gq << c, Vector3d::Zero(), a;
+  gs.head<3>() = 2.0 * a;
+  gt << Vector3d::Zero(), c, b;
+  const Vec9 gx = q * gp + p * gq - t * gs - s * gt;
+  const Vec9 gy = -(L * gD + D * gL);
+  const double tx = -y / r2, ty = x / r2;
+  const Vec9 gtheta = tx * gx + ty * gy;
+
+  // Back to the 12 corner coordinates: a, b, c all move with -x0.
+  const auto to_corners = [](const Vec9& g) {
+    Eigen::Matrix<double, 12, 1> out12;
+    out12.segment<3>(0) = -(g.segment<3>(0) + g.segment<3>(3) + g.segment<3>(6));
+    out12.segment<9>(3) = g;
+    return out12;
+  };
+  out.gradient = to_corners(gtheta);
+  if (!want_hessian) return out;
+
+  Mat9 hD = Mat9::Zero();
+  hD.block<3, 3>(0, 3) = -cross_matrix(c);
+  hD.block<3, 3>(0, 6) = cross_matrix(b);
+  hD.block<3, 3>(3, 6) = -cross_matrix(a);
+  hD.block<3, 3>(3, 0) = hD.block<3, 3>(0, 3).transpose();
+  hD.block<3, 3>(6, 0) = hD.block<3, 3>(0, 6).transpose();
+  hD.block<3, 3>(6, 3) = hD.block<3, 3>(3, 6).transpose();
+  Mat9 hL = Mat9::Zero();
+  hL.block<3, 3>(0, 0) = (Matrix3d::Identity() - a * a.transpose() / s) / L;
+  Mat9 hp = Mat9::Zero(), hq = Mat9::Zero(), hs = Mat9::Zero(), ht = Mat9::Zero();
+  hp.block<3, 3>(0, 3) = hp.block<3, 3>(3, 0) = Matrix3d::Identity();
+  hq.block<3, 3>(0, 6) = hq.block<3, 3>(6, 0) = Matrix3d::Identity();
+  hs.block<3, 3>(0, 0) = 2.0 * Matrix3d::Identity();
+  ht.block<3, 3>(3, 6) = ht.block<3, 3>(6, 3) = Matrix3d::Identity();
+  const Mat9 hx = sym_outer(gp, gq) + q * hp + p * hq - sym_outer(gs, gt) - t * hs - s * ht;
+  const Mat9 hy = -(L * hD + sym_outer(gD, gL) + D * hL);
+  const double r4 = r2 * r2;
+  const double txx = 2 * x * y / r4, tyy = -2 * x * y / r4, txy = (y * y - x * x) / r4;
+  const Mat9 htheta = txx * gx * gx.transpose() + tyy * gy * gy.transpose() + txy * sym_outer(gx, gy) + tx * hx + ty * hy;
+
+  // H12 = T^T H9 T with T mapping corners to (a, b, c).
+  Eigen::Matrix<double, 9, 12> T = Eigen::Matrix<double, 9, 12>::Zero();
+  for (int k = 0; k < 3; ++k) {
+    T.block<3, 3>(3 * k, 0) = -Matrix3d::Identity();
+    T.block<3, 3>(3 * k, 3 * (k + 1)) = Matrix3d::Identity();
+  }
+  out.hessian = T.transpose() * htheta * T;
+  return out;
+}
+
+double hinge_stiffness(double bending, double rest_edge_length, double rest_area_1, double rest_area_2) {
+  return 0.5 * bending * rest_edge_length * rest_edge_length / (rest_area_1 + rest_area_2);
+}
+
+Element12 hinge_element(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const Vector3d& x3, double stiffness,
+                        double rest_angle, bool want_hessian, HessianKind kind) {
+  const DihedralAngle angle = dihedral_angle(x0, x1, x2, x3, want_hessian && kind != HessianKind::GaussNewton);
+  Element12 out;
+  const double d = angle.degenerate ? 0.0 : angle.theta - rest_angle;
+  out.energy = stiffness * d * d;
+  out.gradient = 2.0 * stiffness * d * angle.gradient;
+  if (!want_hessian) return out;
+  out.hessian = 2.0 * stiffness * angle.gradient * angle.gradient.transpose();
+  if (kind == HessianKind::GaussNewton) return out;
+  out.hessian += 2.0 * stiffness * d * angle.hessian;
+  if (kind == HessianKind::Projected) project_to_psd<12>(out.hessian);
+  return out;
+}
+
+} // namespace foldsketch

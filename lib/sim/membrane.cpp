@@ -1,0 +1,93 @@
+#include "sim/membrane.h"
+
+#include <cmath>
+
+#include <Eigen/LU>
+
+#include "sim/psd_projection.h"
+
+namespace foldsketch {
+
+MembraneStiffness membrane_stiffness(const Material& m) {
+  const double e1 = m.stretch_weft, e2 = m.stretch_warp, nu12 = m.poisson;
+  const double nu21 = nu12 * e2 / e1;
+  const double denom = 1.0 - nu12 * nu21;
+  return {e1 / denom, nu12 * e2 / denom, e2 / denom, m.shear};
+}
+
+MembraneRest membrane_rest(const Vector2d& X0, const Vector2d& X1, const Vector2d& X2) {
+  Eigen::Matrix2d Dm;
+  Dm.col(0) = X1 - X0;
+  Dm.col(1) = X2 - X0;
+  const double det = Dm.determinant();
+  MembraneRest r;
+  r.area = 0.5 * std::abs(det);
+  r.Dm_inverse = (Eigen::Matrix2d() << Dm(1, 1), -Dm(0, 1), -Dm(1, 0), Dm(0, 0)).finished() / det;
+  return r;
+}
+
+namespace {
+using Matrix32 = Eigen::Matrix<double, 3, 2>;
+
+Eigen::Matrix2d stress(const Eigen::Matrix2d& E, const MembraneStiffness& k) {
+  Eigen::Matrix2d S;
+  S(0, 0) = k.c11 * E(0, 0) + k.c12 * E(1, 1);
+  S(1, 1) = k.c12 * E(0, 0) + k.c22 * E(1, 1);
+  S(0, 1) = S(1, 0) = 2.0 * k.c33 * E(0, 1);
+  return S;
+}
+
+Matrix32 deformation(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest) {
+  Matrix32 Ds;
+  Ds.col(0) = x1 - x0;
+  Ds.col(1) = x2 - x0;
+  return Ds * rest.Dm_inverse;
+}
+} // namespace
+
+Eigen::Vector3d green_strain(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest) {
+  const Matrix32 F = deformation(x0, x1, x2, rest);
+  const Eigen::Matrix2d E = 0.5 * (F.transpose() * F - Eigen::Matrix2d::Identity());
+  return {E(0, 0), E(1, 1), E(0, 1)};
+}
+
+Element9 membrane_element(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest,
+                          const MembraneStiffness& k, bool want_hessian, HessianKind kind) {
+  const Matrix32 F = deformation(x0, x1, x2, rest);
+  const Eigen::Matrix2d E = 0.5 * (F.transpose() * F - Eigen::Matrix2d::Identity());
+  const Eigen::Matrix2d S = stress(E, k);
+  Element9 out;
+  out.energy = rest.area * (0.5 * k.c11 * E(0, 0) * E(0, 0) + k.c12 * E(0, 0) * E(1, 1) + 0.5 * k.c22 * E(1, 1) * E(1, 1) +
+                            2.0 * k.c33 * E(0, 1) * E(0, 1));
+  // dW = A (F S) : dF and dF = dDs Dm^-1, so dW/dDs = A F S Dm^-T.
+  const Matrix32 G = rest.area * F * S * rest.Dm_inverse.transpose();
+  out.gradient.segment<3>(3) = G.col(0);
+  out.gradient.segment<3>(6) = G.col(1);
+  out.gradient.segment<3>(0) = -G.col(0) - G.col(1);
+  if (!want_hessian) return out;
+
+  // Column by column: perturb one coordinate of one corner and differentiate G.
+  const bool stress_psd = S.trace() >= 0.0 && S.determinant() >= 0.0;
+  const bool geometric = kind != HessianKind::GaussNewton;
+  for (int corner = 0; corner < 3; ++corner)
+    for (int axis = 0; axis < 3; ++axis) {
+      Matrix32 dDs = Matrix32::Zero();
+      if (corner == 0) dDs.row(axis).setConstant(-1.0);
+      else dDs(axis, corner - 1) = 1.0;
+      const Matrix32 dF = dDs * rest.Dm_inverse;
+      const Eigen::Matrix2d dE = 0.5 * (dF.transpose() * F + F.transpose() * dF);
+      const Matrix32 dP = (geometric ? Matrix32(dF * S) : Matrix32::Zero()) + F * stress(dE, k);
+      const Matrix32 dG = rest.area * dP * rest.Dm_inverse.transpose();
+      auto column = out.hessian.col(3 * corner + axis);
+      column.segment<3>(3) = dG.col(0);
+      column.segment<3>(6) = dG.col(1);
+      column.segment<3>(0) = -dG.col(0) - dG.col(1);
+    }
+  // With S positive semi-definite the geometric term is PSD too, so only compressed
+  // triangles need the (costlier) eigen-decomposition.
+  out.hessian = 0.5 * (out.hessian + out.hessian.transpose()).eval();
+  if (kind == HessianKind::Projected && !stress_psd) project_to_psd<9>(out.hessian);
+  return out;
+}
+
+} // namespace foldsketch

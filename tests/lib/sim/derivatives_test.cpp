@@ -1,0 +1,120 @@
+// Every energy term's gradient and Hessian against central finite differences, at random
+// configurations, nearly degenerate triangles included (relative error < 1e-5).
+#include <random>
+
+#include <Eigen/Eigenvalues>
+#include <gtest/gtest.h>
+
+#include "sim/bending.h"
+#include "sim/membrane.h"
+
+namespace foldsketch {
+namespace {
+
+constexpr double kTolerance = 1e-5;
+
+// Relative error of `analytic` against `numeric`, scaled by the larger of their norms.
+double relative_error(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& numeric) {
+  const double scale = std::max({analytic.norm(), numeric.norm(), 1e-300});
+  return (analytic - numeric).norm() / scale;
+}
+
+// Central differences of f (value, gradient) at q with step h (relative to the geometry).
+template <int N, typename F>
+void check_derivatives(const Eigen::Matrix<double, N, 1>& q, double h, F f, const char* what) {
+  const auto [e0, g0, H0] = f(q);
+  Eigen::Matrix<double, N, 1> g_fd;
+  Eigen::Matrix<double, N, N> H_fd;
+  for (int i = 0; i < N; ++i) {
+    Eigen::Matrix<double, N, 1> qp = q, qm = q;
+    qp(i) += h;
+    qm(i) -= h;
+    const auto [ep, gp, Hp] = f(qp);
+    const auto [em, gm, Hm] = f(qm);
+    g_fd(i) = (ep - em) / (2 * h);
+    H_fd.col(i) = (gp - gm) / (2 * h);
+  }
+  EXPECT_LT(relative_error(g0, g_fd), kTolerance) << what << " gradient\n" << g0.transpose() << "\n" << g_fd.transpose();
+  EXPECT_LT(relative_error(H0, H_fd), kTolerance) << what << " Hessian";
+  EXPECT_LT(relative_error(H0, H0.transpose()), 1e-12) << what << " Hessian symmetry";
+  (void)e0;
+}
+
+template <int N>
+double smallest_eigenvalue(const Eigen::Matrix<double, N, N>& H) {
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, N, N>>(H).eigenvalues().minCoeff();
+}
+
+Vector3d corner(const Eigen::VectorXd& q, int k) { return q.segment<3>(3 * k); }
+
+TEST(Derivatives, MembraneAtRandomConfigurations) {
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  const Material cotton = *material_preset("cotton-thin");
+  Material anisotropic = *material_preset("denim");
+  anisotropic.poisson = 0.3;
+  for (const Material& m : {cotton, anisotropic}) {
+    const MembraneStiffness k = membrane_stiffness(m);
+    // A regular triangle, a 0.5-degree sliver and a needle of 0.01 degrees.
+    for (const double apex : {0.9, 0.0044, 8.7e-5}) {
+      const MembraneRest rest = membrane_rest({0, 0}, {0.01, 0}, {0.005, 0.01 * apex});
+      for (int trial = 0; trial < 10; ++trial) {
+        Eigen::Matrix<double, 9, 1> q;
+        q << 0, 0, 0, 0.01, 0, 0, 0.005, 0.01 * apex, 0;
+        for (int i = 0; i < 9; ++i) q(i) += 0.002 * noise(rng);  // stretch, shear, compress and bend
+        const double h = 1e-7;
+        check_derivatives<9>(q, h, [&](const Eigen::Matrix<double, 9, 1>& x) {
+          const Element9 e = membrane_element(corner(x, 0), corner(x, 1), corner(x, 2), rest, k, true, HessianKind::Exact);
+          return std::make_tuple(e.energy, e.gradient, e.hessian);
+        }, "membrane");
+      }
+    }
+  }
+}
+
+TEST(Derivatives, DihedralAngleAndHingeAtRandomConfigurations) {
+  std::mt19937 rng(11);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  for (const double flap : {1.0, 0.02, 0.0087}) {  // regular, 1-degree and 0.5-degree flaps
+    for (int trial = 0; trial < 20; ++trial) {
+      Eigen::Matrix<double, 12, 1> q;
+      q << 0, 0, 0, 1, 0, 0, 0.4, flap, 0, 0.6, -flap, 0;
+      for (int i = 0; i < 12; ++i) q(i) += 0.1 * flap * noise(rng);
+      q.segment<3>(9) += Vector3d(0, 0, flap * std::sin(trial * 0.3));  // fold up to ~ +-75 degrees
+      const double h = 1e-6 * flap;
+      check_derivatives<12>(q, h, [&](const Eigen::Matrix<double, 12, 1>& x) {
+        const DihedralAngle a = dihedral_angle(corner(x, 0), corner(x, 1), corner(x, 2), corner(x, 3), true);
+        return std::make_tuple(a.theta, a.gradient, a.hessian);
+      }, "dihedral angle");
+      check_derivatives<12>(q, h, [&](const Eigen::Matrix<double, 12, 1>& x) {
+        const Element12 e = hinge_element(corner(x, 0), corner(x, 1), corner(x, 2), corner(x, 3), 2.5e-6, 0.1, true,
+                                          HessianKind::Exact);
+        return std::make_tuple(e.energy, e.gradient, e.hessian);
+      }, "hinge");
+    }
+  }
+}
+
+TEST(Derivatives, ProjectedHessiansArePositiveSemiDefinite) {
+  const MembraneStiffness k = membrane_stiffness(*material_preset("cotton-thin"));
+  const MembraneRest rest = membrane_rest({0, 0}, {1, 0}, {0, 1});
+  // Compressed to 60 %: stress negative, exact Hessian indefinite.
+  const Element9 exact = membrane_element({0, 0, 0}, {0.6, 0, 0}, {0, 0.6, 0}, rest, k, true, HessianKind::Exact);
+  const Element9 projected = membrane_element({0, 0, 0}, {0.6, 0, 0}, {0, 0.6, 0}, rest, k, true, HessianKind::Projected);
+  EXPECT_LT(smallest_eigenvalue(exact.hessian), -1e-3);
+  EXPECT_GT(smallest_eigenvalue(projected.hessian), -1e-9);
+  const Element12 hinge = hinge_element({0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -0.5, 0.8}, 1.0, 0.0, true, HessianKind::Projected);
+  EXPECT_GT(smallest_eigenvalue(hinge.hessian), -1e-9);
+}
+
+TEST(Bending, FlatHingeHasZeroAngleAndSignedFolds) {
+  EXPECT_NEAR(dihedral_angle({0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, false).theta, 0.0, 1e-15);
+  // Fold the second flap up by 60 degrees (about the edge): |theta| = 60 degrees.
+  const double a = M_PI / 3;
+  const double theta = dihedral_angle({0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -std::cos(a), std::sin(a)}, false).theta;
+  EXPECT_NEAR(std::abs(theta), a, 1e-12);
+  EXPECT_TRUE(dihedral_angle({0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0.5, -1, 0}, false).degenerate);
+}
+
+} // namespace
+} // namespace foldsketch
