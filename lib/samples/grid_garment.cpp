@@ -46,6 +46,18 @@ Garment grid_garment(const std::vector<GridPanel>& panels, double weld_tolerance
   return g;
 }
 
+GridPanel flat_panel(const std::string& name, int nu, int nv, double width, double height, const Vector3d& origin,
+                     const Vector3d& across, const Vector3d& up) {
+  GridPanel p{name, nu + 1, nv + 1, MatrixX2d((nu + 1) * (nv + 1), 2), MatrixX3d((nu + 1) * (nv + 1), 3)};
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i <= nu; ++i) {
+      const double u = width * i / nu, v = height * j / nv;
+      p.pattern.row(j * (nu + 1) + i) << u, v;
+      p.drape.row(j * (nu + 1) + i) = (origin + u * across + v * up).transpose();
+    }
+  return p;
+}
+
 void lay_out_patterns(std::vector<GridPanel>& panels, double gap) {
   double x = 0.0;
   for (GridPanel& p : panels) {

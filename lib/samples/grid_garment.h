@@ -24,6 +24,11 @@ struct GridPanel {
 // preferred shear direction) and weld drape nodes of all panels closer than weld_tolerance.
 Garment grid_garment(const std::vector<GridPanel>& panels, double weld_tolerance);
 
+// A flat rectangular panel of nu x nv cells, width x height [m] in the pattern (x across, y up);
+// in the drape, pattern (u, v) sits at origin + u * across + v * up (unit vectors).
+GridPanel flat_panel(const std::string& name, int nu, int nv, double width, double height, const Vector3d& origin,
+                     const Vector3d& across, const Vector3d& up);
+
 // Lay the panels out side by side in pattern space, left to right in the given order with
 // `gap` between their bounding boxes, bottoms on y = 0. Panels keep their shape.
 void lay_out_patterns(std::vector<GridPanel>& panels, double gap);

@@ -28,18 +28,6 @@ int divisions(double length, double h) { return std::max(1, static_cast<int>(std
 // Edge length giving about `triangles` right-triangle pairs over `area`.
 double grid_spacing(double area, int triangles) { return std::sqrt(2.0 * area / std::max(triangles, 2)); }
 
-GridPanel flat_panel(const std::string& name, int nu, int nv, double width, double height,
-                     const Vector3d& origin, const Vector3d& across, const Vector3d& up) {
-  GridPanel p{name, nu + 1, nv + 1, MatrixX2d((nu + 1) * (nv + 1), 2), MatrixX3d((nu + 1) * (nv + 1), 3)};
-  for (int j = 0; j <= nv; ++j)
-    for (int i = 0; i <= nu; ++i) {
-      const double u = width * i / nu, v = height * j / nv;
-      p.pattern.row(j * (nu + 1) + i) << u, v;
-      p.drape.row(j * (nu + 1) + i) = (origin + u * across + v * up).transpose();
-    }
-  return p;
-}
-
 PinSelector pin_box(const Vector3d& lo, const Vector3d& hi) {
   PinSelector s;
   s.box = Eigen::AlignedBox3d(lo - Vector3d::Constant(kPinSlack), hi + Vector3d::Constant(kPinSlack));
@@ -55,10 +43,27 @@ Scene base_scene(const std::string& name) {
 
 SampleScene flag(const SampleParams& params) {
   constexpr double kWidth = 1.0, kHeight = 0.6, kPoleRadius = 0.02, kPoleTop = 2.1, kFlagTop = 2.0;
+  // The flag rests in soft vertical waves, as a flag does on a still day: each column-to-column
+  // strip is a vertical rectangle turned by kWaveAngle sin(2 pi u / kWavelength) at its middle,
+  // so the placement stays exactly isometric. A flat sheet with gravity in its own plane would
+  // never leave that plane (a saddle the solver cannot escape).
+  constexpr double kWaveAngle = 0.3, kWavelength = 0.25;
   const double h = grid_spacing(kWidth * kHeight, params.triangles);
   const double x0 = kPoleRadius + 0.005, y0 = kFlagTop - kHeight;
-  std::vector<GridPanel> panels{flat_panel("flag", divisions(kWidth, h), divisions(kHeight, h), kWidth, kHeight,
-                                           {x0, y0, 0}, Vector3d::UnitX(), Vector3d::UnitY())};
+  GridPanel panel = flat_panel("flag", divisions(kWidth, h), divisions(kHeight, h), kWidth, kHeight, {x0, y0, 0},
+                               Vector3d::UnitX(), Vector3d::UnitY());
+  double x = x0, z = 0.0;
+  for (int i = 1; i < panel.columns; ++i) {
+    const double u0 = panel.pattern(i - 1, 0), u1 = panel.pattern(i, 0);
+    const double angle = kWaveAngle * std::sin(std::numbers::pi * (u0 + u1) / kWavelength);
+    x += std::cos(angle) * (u1 - u0);
+    z += std::sin(angle) * (u1 - u0);
+    for (int j = 0; j < panel.rows; ++j) {
+      panel.drape(j * panel.columns + i, 0) = x;
+      panel.drape(j * panel.columns + i, 2) = z;
+    }
+  }
+  std::vector<GridPanel> panels{panel};
   SampleScene out;
   out.garment = grid_garment(panels, kWeldTolerance);
   out.body = cylinder_mesh({0, 0}, kPoleRadius, 0.0, kPoleTop, 24);

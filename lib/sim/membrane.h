@@ -12,11 +12,17 @@ namespace foldsketch {
 //   psi = 1/2 C11 E11^2 + C12 E11 E22 + 1/2 C22 E22^2 + 2 C33 E12^2   [J/m^2].
 struct MembraneStiffness {
   double c11 = 0, c12 = 0, c22 = 0, c33 = 0;
+  // Fraction of c11 / c22 kept where that normal strain is compressive (c12 scaled by the
+  // geometric mean of both fractions, so the stiffness stays positive definite). Fabric
+  // buckles under negligible compressive load (Choi & Ko 2002, "Stable but responsive cloth");
+  // a mesh cannot resolve the finest wrinkles, and full compressive stiffness then props the
+  // cloth up (membrane locking). 1 = plain StVK.
+  double compression = 1.0;
 };
 
 // From uniaxial stiffnesses: C11 = E1/(1 - nu12 nu21), C22 = E2/(1 - nu12 nu21),
 // C12 = nu12 E2/(1 - nu12 nu21), nu21 = nu12 E2/E1, C33 = shear (E1 weft, E2 warp).
-MembraneStiffness membrane_stiffness(const Material& m);
+MembraneStiffness membrane_stiffness(const Material& m, double compression = 1.0);
 
 // Rest data of one triangle: inverse of the 2x2 matrix of pattern edges [X1-X0, X2-X0], and
 // the rest area [m^2].

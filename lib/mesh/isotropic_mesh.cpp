@@ -1,0 +1,83 @@
+#include "mesh/isotropic_mesh.h"
+
+#include <cmath>
+#include <map>
+#include <random>
+#include <vector>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include "core/error.h"
+
+namespace foldsketch {
+namespace {
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
+using Fb = CGAL::Constrained_triangulation_face_base_2<Kernel>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
+using Point = Kernel::Point_2;
+
+double segment_distance(const Vector2d& p, const Vector2d& a, const Vector2d& b) {
+  const Vector2d ab = b - a;
+  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  return (p - (a + t * ab)).norm();
+}
+} // namespace
+
+PlanarMesh isotropic_mesh(const MatrixX2d& outline, double spacing, const IsotropicMeshParams& params) {
+  const int n = static_cast<int>(outline.rows());
+  if (n < 3 || !(spacing > 0.0)) throw ArgumentError("isotropic_mesh: need an outline of 3+ points and a positive spacing");
+  std::vector<Point> polygon;
+  for (int i = 0; i < n; ++i) polygon.emplace_back(outline(i, 0), outline(i, 1));
+  if (!CGAL::is_simple_2(polygon.begin(), polygon.end(), Kernel())) throw ArgumentError("isotropic_mesh: the outline crosses itself");
+  if (CGAL::orientation_2(polygon.begin(), polygon.end(), Kernel()) != CGAL::COUNTERCLOCKWISE)
+    throw ArgumentError("isotropic_mesh: the outline must be counter-clockwise");
+
+  std::vector<Vector2d> points;
+  for (int i = 0; i < n; ++i) points.emplace_back(outline.row(i).transpose());
+  // Hexagonal lattice over the bounding box, jittered, kept inside and clear of the outline.
+  const Vector2d lo = outline.colwise().minCoeff(), hi = outline.colwise().maxCoeff();
+  std::mt19937 rng(params.seed);
+  std::uniform_real_distribution<double> jitter(-params.jitter * spacing, params.jitter * spacing);
+  const double row_height = spacing * std::sqrt(3.0) / 2.0;
+  for (int j = 0; lo.y() + j * row_height <= hi.y(); ++j)
+    for (int i = 0; lo.x() + (i + 0.5 * (j % 2)) * spacing <= hi.x(); ++i) {
+      const Vector2d base(lo.x() + (i + 0.5 * (j % 2)) * spacing, lo.y() + j * row_height);
+      const Vector2d p = base + Vector2d(jitter(rng), jitter(rng));
+      if (CGAL::bounded_side_2(polygon.begin(), polygon.end(), Point(p.x(), p.y()), Kernel()) != CGAL::ON_BOUNDED_SIDE) continue;
+      bool clear = true;
+      for (int k = 0; k < n && clear; ++k)
+        clear = segment_distance(p, outline.row(k), outline.row((k + 1) % n)) >= params.boundary_clearance * spacing;
+      if (clear) points.push_back(p);
+    }
+
+  Cdt cdt;
+  std::vector<Cdt::Vertex_handle> handles;
+  for (size_t i = 0; i < points.size(); ++i) {
+    handles.push_back(cdt.insert(Point(points[i].x(), points[i].y())));
+    handles.back()->info() = static_cast<int>(i);
+  }
+  for (int k = 0; k < n; ++k) cdt.insert_constraint(handles[k], handles[(k + 1) % n]);
+  if (static_cast<size_t>(cdt.number_of_vertices()) != points.size())
+    throw ArgumentError("isotropic_mesh: outline points coincide, or constraints crossed and added points");
+
+  std::vector<std::array<int, 3>> faces;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    const Point c = CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+    if (CGAL::bounded_side_2(polygon.begin(), polygon.end(), c, Kernel()) != CGAL::ON_BOUNDED_SIDE) continue;
+    faces.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});  // CGAL faces are CCW
+  }
+  PlanarMesh mesh;
+  mesh.P.resize(static_cast<long>(points.size()), 2);
+  for (size_t i = 0; i < points.size(); ++i) mesh.P.row(static_cast<long>(i)) = points[i].transpose();
+  mesh.F.resize(static_cast<long>(faces.size()), 3);
+  for (size_t f = 0; f < faces.size(); ++f) mesh.F.row(static_cast<long>(f)) << faces[f][0], faces[f][1], faces[f][2];
+  return mesh;
+}
+
+} // namespace foldsketch

@@ -1,0 +1,216 @@
+#include "sim/cloth_energy.h"
+
+#include <algorithm>
+
+#include <omp.h>
+
+#include "core/error.h"
+#include "sim/bending.h"
+
+namespace foldsketch {
+
+ClothEnergy::ClothEnergy(const ClothModel& model) : model_(model) {
+  free_index_.assign(static_cast<size_t>(model.vertex_count), 0);
+  for (const Pin& p : model.pins) free_index_[p.vertex] = -1;
+  for (int v = 0; v < model.vertex_count; ++v) {
+    if (free_index_[v] < 0) continue;
+    free_index_[v] = static_cast<int>(free_vertices_.size());
+    free_vertices_.push_back(v);
+  }
+  const int n = free_count();
+
+  // Block pattern: every pair of free vertices that share an element, and every diagonal.
+  neighbours_.assign(static_cast<size_t>(n), {});
+  const auto couple = [&](const int* vs, int count) {
+    for (int i = 0; i < count; ++i)
+      for (int j = 0; j < count; ++j) {
+        const int a = free_index_[vs[i]], b = free_index_[vs[j]];
+        if (a >= 0 && b >= 0) neighbours_[b].push_back(a);
+      }
+  };
+  for (int v = 0; v < n; ++v) neighbours_[v].push_back(v);
+  for (const auto& t : model.triangles) couple(t.data(), 3);
+  for (const Hinge& h : model.hinges) couple(h.v.data(), 4);
+  for (const StitchSpring& s : model.stitches) couple(s.v.data(), 4);
+  pattern_.resize(3 * n, 3 * n);
+  std::vector<int> outer(static_cast<size_t>(3 * n + 1), 0);
+  for (int b = 0; b < n; ++b) {
+    auto& rows = neighbours_[b];
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    for (int c = 0; c < 3; ++c) outer[3 * b + c + 1] = outer[3 * b + c] + 3 * static_cast<int>(rows.size());
+  }
+  pattern_.resizeNonZeros(outer.back());
+  std::copy(outer.begin(), outer.end(), pattern_.outerIndexPtr());
+  for (int b = 0; b < n; ++b)
+    for (int c = 0; c < 3; ++c) {
+      int at = outer[3 * b + c];
+      for (int a : neighbours_[b])
+        for (int r = 0; r < 3; ++r) pattern_.innerIndexPtr()[at++] = 3 * a + r;
+    }
+  std::fill(pattern_.valuePtr(), pattern_.valuePtr() + pattern_.nonZeros(), 0.0);
+
+  for (const auto& t : model.triangles) triangle_blocks_.push_back(blocks_for(t.data(), 3));
+  for (const Hinge& h : model.hinges) hinge_blocks_.push_back(blocks_for(h.v.data(), 4));
+  for (const StitchSpring& s : model.stitches) stitch_blocks_.push_back(blocks_for(s.v.data(), 4));
+  for (int v = 0; v < n; ++v) diagonal_blocks_.push_back(block(v, v));
+  free_mass_.resize(3 * n);
+  for (int v = 0; v < n; ++v) free_mass_.segment<3>(3 * v).setConstant(model.mass(free_vertices_[v]));
+}
+
+// Block (a, b) entry (r, c) lives at base + c * stride + r: every column of block column b
+// holds the same block rows, three entries each.
+ClothEnergy::Block ClothEnergy::block(int a, int b) const {
+  const auto& rows = neighbours_[b];
+  const int rank = static_cast<int>(std::lower_bound(rows.begin(), rows.end(), a) - rows.begin());
+  return {pattern_.outerIndexPtr()[3 * b] + 3 * rank, 3 * static_cast<int>(rows.size())};
+}
+
+std::vector<ClothEnergy::Block> ClothEnergy::blocks_for(const int* vs, int count) const {
+  std::vector<Block> out(static_cast<size_t>(count * count));
+  for (int j = 0; j < count; ++j)
+    for (int i = 0; i < count; ++i) {
+      const int a = free_index_[vs[i]], b = free_index_[vs[j]];
+      if (a >= 0 && b >= 0) out[static_cast<size_t>(j * count + i)] = block(a, b);
+    }
+  return out;
+}
+
+template <int N>
+void ClothEnergy::scatter(const std::vector<Block>& blocks, const Eigen::Matrix<double, 3 * N, 3 * N>& H, double* values) const {
+  for (int j = 0; j < N; ++j)
+    for (int i = 0; i < N; ++i) {
+      const Block& b = blocks[static_cast<size_t>(j * N + i)];
+      if (b.base < 0) continue;
+      for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) values[b.base + c * b.stride + r] += H(3 * i + r, 3 * j + c);
+    }
+}
+
+EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, SparseMatrix* hessian, HessianKind membrane_kind,
+                                  HessianKind bending_kind) const {
+  if (x.rows() != model_.vertex_count) throw ArgumentError("ClothEnergy: drape has the wrong number of vertices");
+  const bool want_gradient = gradient != nullptr, want_hessian = hessian != nullptr;
+  if (want_hessian && (hessian->nonZeros() != pattern_.nonZeros() || hessian->rows() != pattern_.rows())) *hessian = pattern_;
+  const int n = free_count();
+  const long value_count = want_hessian ? hessian->nonZeros() : 0;
+  EnergyTerms terms;
+  // Each thread accumulates into its own gradient and Hessian values; they are summed after.
+  std::vector<VectorXd> thread_gradients;
+  std::vector<std::vector<double>> thread_values;
+  std::vector<EnergyTerms> thread_terms;
+#pragma omp parallel
+  {
+#pragma omp single
+    {
+      const int threads = omp_get_num_threads();
+      thread_gradients.assign(static_cast<size_t>(threads), want_gradient ? VectorXd::Zero(3 * n) : VectorXd());
+      thread_values.assign(static_cast<size_t>(threads), std::vector<double>(static_cast<size_t>(value_count), 0.0));
+      thread_terms.assign(static_cast<size_t>(threads), EnergyTerms{});
+    }
+    const auto me = static_cast<size_t>(omp_get_thread_num());
+    VectorXd& grad = thread_gradients[me];
+    double* values = thread_values[me].data();
+    EnergyTerms& mine = thread_terms[me];
+    const auto add_gradient = [&](const int* vs, int count, const auto& g) {
+      if (!want_gradient) return;
+      for (int i = 0; i < count; ++i)
+        if (const int a = free_index_[vs[i]]; a >= 0) grad.segment<3>(3 * a) += g.template segment<3>(3 * i);
+    };
+
+#pragma omp for schedule(static) nowait
+    for (long t = 0; t < static_cast<long>(model_.triangles.size()); ++t) {
+      const auto& v = model_.triangles[static_cast<size_t>(t)];
+      const Element9 e = membrane_element(x.row(v[0]), x.row(v[1]), x.row(v[2]), model_.rest[static_cast<size_t>(t)],
+                                          model_.stiffness, want_hessian, membrane_kind);
+      mine.membrane += e.energy;
+      add_gradient(v.data(), 3, e.gradient);
+      if (want_hessian) scatter<3>(triangle_blocks_[static_cast<size_t>(t)], e.hessian, values);
+    }
+#pragma omp for schedule(static) nowait
+    for (long h = 0; h < static_cast<long>(model_.hinges.size()); ++h) {
+      const Hinge& hinge = model_.hinges[static_cast<size_t>(h)];
+      const auto& v = hinge.v;
+      const Element12 e = hinge_element(x.row(v[0]), x.row(v[1]), x.row(v[2]), x.row(v[3]), hinge.stiffness, hinge.rest_angle,
+                                        want_hessian, bending_kind);
+      mine.bending += e.energy;
+      add_gradient(v.data(), 4, e.gradient);
+      if (want_hessian) scatter<4>(hinge_blocks_[static_cast<size_t>(h)], e.hessian, values);
+    }
+#pragma omp for schedule(static) nowait
+    for (long s = 0; s < static_cast<long>(model_.stitches.size()); ++s) {
+      // E = k/2 |sum_i w_i x_i|^2 (b's weights negative): quadratic, exact Hessian k w w^T (x) I.
+      const StitchSpring& st = model_.stitches[static_cast<size_t>(s)];
+      Vector3d gap = Vector3d::Zero();
+      for (int i = 0; i < 4; ++i) gap += st.w[i] * x.row(st.v[i]).transpose();
+      mine.stitches += 0.5 * model_.stitch_stiffness * gap.squaredNorm();
+      Eigen::Matrix<double, 12, 1> g;
+      for (int i = 0; i < 4; ++i) g.segment<3>(3 * i) = model_.stitch_stiffness * st.w[i] * gap;
+      add_gradient(st.v.data(), 4, g);
+      if (want_hessian) {
+        Eigen::Matrix<double, 12, 12> H = Eigen::Matrix<double, 12, 12>::Zero();
+        for (int i = 0; i < 4; ++i)
+          for (int j = 0; j < 4; ++j)
+            H.block<3, 3>(3 * i, 3 * j) = model_.stitch_stiffness * st.w[i] * st.w[j] * Eigen::Matrix3d::Identity();
+        scatter<4>(stitch_blocks_[static_cast<size_t>(s)], H, values);
+      }
+    }
+    // Gravity and contact act per vertex; pinned vertices do not move, so only free ones count.
+#pragma omp for schedule(static)
+    for (int a = 0; a < n; ++a) {
+      const int v = free_vertices_[a];
+      const Vector3d p = x.row(v);
+      mine.gravity -= model_.mass(v) * model_.gravity.dot(p);
+      if (want_gradient) grad.segment<3>(3 * a) -= model_.mass(v) * model_.gravity;
+      if (!model_.body) continue;
+      // One-sided penalty E = k A / 2 (t - d)^2 for d < t; Hessian k A n n^T (the body's
+      // curvature term is dropped: zero on faces, and it would make the term indefinite).
+      const BodyPoint b = model_.body->at(p);
+      const double depth = model_.contact_thickness - b.distance;
+      if (depth <= 0.0) continue;
+      const double k = model_.contact_stiffness * model_.contact_area(v);
+      mine.contact += 0.5 * k * depth * depth;
+      if (want_gradient) grad.segment<3>(3 * a) -= k * depth * b.normal;
+      if (want_hessian) {
+        const Eigen::Matrix3d H = k * b.normal * b.normal.transpose();
+        const Block& d = diagonal_blocks_[static_cast<size_t>(a)];
+        for (int c = 0; c < 3; ++c)
+          for (int r = 0; r < 3; ++r) values[d.base + c * d.stride + r] += H(r, c);
+      }
+    }
+  }
+  for (const EnergyTerms& t : thread_terms) {
+    terms.membrane += t.membrane;
+    terms.bending += t.bending;
+    terms.gravity += t.gravity;
+    terms.stitches += t.stitches;
+    terms.contact += t.contact;
+  }
+  if (want_gradient) {
+    gradient->setZero(3 * n);
+    for (const VectorXd& g : thread_gradients) *gradient += g;
+  }
+  if (want_hessian) {
+    double* out = hessian->valuePtr();
+    std::fill(out, out + value_count, 0.0);
+    for (const auto& v : thread_values)
+      for (long i = 0; i < value_count; ++i) out[i] += v[static_cast<size_t>(i)];
+  }
+  return terms;
+}
+
+VectorXd ClothEnergy::gravity_force() const {
+  VectorXd f(3 * free_count());
+  for (int a = 0; a < free_count(); ++a) f.segment<3>(3 * a) = model_.mass(free_vertices_[a]) * model_.gravity;
+  return f;
+}
+
+void ClothEnergy::add_mass(SparseMatrix& A, double lambda) const {
+  double* values = A.valuePtr();
+  for (int a = 0; a < free_count(); ++a) {
+    const Block& d = diagonal_blocks_[static_cast<size_t>(a)];
+    for (int r = 0; r < 3; ++r) values[d.base + r * d.stride + r] += lambda * free_mass_(3 * a + r);
+  }
+}
+
+} // namespace foldsketch

@@ -1,0 +1,70 @@
+// The total potential of a cloth model (membrane + bending + gravity + stitches + body
+// contact), its gradient and its Hessian over the free (unpinned) degrees of freedom, assembled
+// into one fixed sparsity pattern so the symbolic factorisation is done once.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/SparseCore>
+
+#include "sim/cloth_model.h"
+
+namespace foldsketch {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+struct EnergyTerms {
+  double membrane = 0, bending = 0, gravity = 0, stitches = 0, contact = 0;
+  double total() const { return membrane + bending + gravity + stitches + contact; }
+};
+
+class ClothEnergy {
+public:
+  explicit ClothEnergy(const ClothModel& model);
+
+  int free_count() const { return static_cast<int>(free_vertices_.size()); }
+  // free_index()[v]: position of drape vertex v among the free vertices, -1 when pinned.
+  const std::vector<int>& free_index() const { return free_index_; }
+  const std::vector<int>& free_vertices() const { return free_vertices_; }
+
+  // Energy [J] of drape x (#V by 3). gradient (size 3 * free_count) is filled when non-null,
+  // hessian (fixed pattern, full symmetric storage) when non-null, with the membrane and the
+  // bending Hessians of the given kinds. Element loops run in parallel (OpenMP).
+  EnergyTerms evaluate(const MatrixX3d& x, VectorXd* gradient, SparseMatrix* hessian, HessianKind membrane_kind,
+                       HessianKind bending_kind) const;
+  EnergyTerms evaluate(const MatrixX3d& x, VectorXd* gradient, SparseMatrix* hessian, HessianKind kind) const {
+    return evaluate(x, gradient, hessian, kind, kind);
+  }
+
+  // A zero matrix with the pattern every Hessian uses.
+  const SparseMatrix& pattern() const { return pattern_; }
+
+  // Lumped masses per free DOF (3 * free_count) [kg].
+  const VectorXd& free_mass() const { return free_mass_; }
+
+  // Gravity forces on the free DOFs [N]; with the model's gravity zero, empty.
+  VectorXd gravity_force() const;
+
+  // Add lambda * M to the diagonal of a matrix with this pattern.
+  void add_mass(SparseMatrix& A, double lambda) const;
+
+private:
+  struct Block {   // where an element's (a, b) 3x3 block lives in the value array
+    int base = -1; // value index of entry (0, 0); -1 when a or b is pinned
+    int stride = 0;
+  };
+  Block block(int a, int b) const;  // free vertex indices
+  std::vector<Block> blocks_for(const int* vertices, int count) const;
+  template <int N>
+  void scatter(const std::vector<Block>& blocks, const Eigen::Matrix<double, 3 * N, 3 * N>& H, double* values) const;
+
+  const ClothModel& model_;
+  std::vector<int> free_index_, free_vertices_;
+  SparseMatrix pattern_;
+  std::vector<std::vector<int>> neighbours_;  // per free vertex (block column): sorted block rows
+  std::vector<std::vector<Block>> triangle_blocks_, hinge_blocks_, stitch_blocks_;
+  std::vector<Block> diagonal_blocks_;  // per free vertex
+  VectorXd free_mass_;
+};
+
+} // namespace foldsketch

@@ -1,0 +1,73 @@
+// Everything the cloth engine needs about one garment in one scene, computed once: rest shapes
+// from the patterns, lumped masses, hinges (across seams too), stitches, pins, and only those
+// terms the scene's physics asks for.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "garment/garment.h"
+#include "garment/pins.h"
+#include "sim/body_distance.h"
+#include "sim/membrane.h"
+#include "sim/scene.h"
+
+namespace foldsketch {
+
+struct ClothParams {
+  // Penalty stiffness of body contact [N/m^3]: a garment of area density rho resting on the
+  // body sinks rho g / k into the contact layer, 1.5 um for cotton and 3 um for denim, far
+  // below the 0.5 mm penetration budget, while k times a vertex area (about 1e-4 m^2 at 10K
+  // triangles) stays near the membrane stiffness and keeps Newton well conditioned.
+  double contact_stiffness = 1e6;
+  // Zero-length stitch springs, as a multiple of the material's largest stretch stiffness
+  // [N/m per N/m]: a stitch gap of 1 % of the membrane strain at equal force.
+  double stitch_stiffness_factor = 100.0;
+  // Fraction of the tensile stiffness kept in compression (see MembraneStiffness). 1 = plain
+  // StVK: no measured value exists for our fabrics. Lowering it makes every fabric drape lower
+  // in the Cusick test (1 -> 0.01: silk 0.41 -> 0.25, cotton 0.28 -> 0.21, leather 0.88 -> 0.79
+  // on an 8 mm mesh) but did not put silk below cotton (tests/lib/sim/physics_test.cpp).
+  double compression_fraction = 1.0;
+};
+
+struct Hinge {
+  std::array<int, 4> v;  // edge v0-v1; v2 on the triangle walking v0 -> v1, v3 on the other
+  double stiffness = 0;  // k of k (theta - theta0)^2 [J]
+  double rest_angle = 0; // patterns are flat: 0
+};
+
+struct StitchSpring {
+  std::array<int, 4> v;       // a0, a1, b0, b1 (a1 or b1 may repeat a0/b0 with weight 0)
+  std::array<double, 4> w;    // point a = w0 x_a0 + w1 x_a1, b = -(w2 x_b0 + w3 x_b1)
+};
+
+struct ClothModel {
+  int vertex_count = 0;
+  VectorXd mass;                                 // lumped, #V [kg]
+  std::vector<std::array<int, 3>> triangles;     // drape vertex indices
+  std::vector<MembraneRest> rest;                // per triangle
+  MembraneStiffness stiffness;
+  std::vector<Hinge> hinges;                     // empty when the material has no bending
+  std::vector<StitchSpring> stitches;
+  double stitch_stiffness = 0;                   // [N/m]
+  Vector3d gravity = Vector3d::Zero();           // [m/s^2]
+  std::vector<Pin> pins;                         // held exactly (their DOFs are eliminated)
+  std::optional<BodyDistance> body;              // only when the scene asks for body contact
+  double contact_thickness = 0;                  // [m]
+  double contact_stiffness = 0;                  // [N/m^3]
+  VectorXd contact_area;                         // per vertex rest area share [m^2]
+  Material material;
+};
+
+// Build the model. `pinned` are drape vertices held at their positions in g.V. Throws
+// InputError-free ArgumentError on structural problems; degenerate pattern triangles (no rest
+// shape) are an error naming the first one.
+ClothModel cloth_model(const Garment& g, const Scene& scene, const TriangleMesh* body, const std::vector<int>& pinned,
+                       const ClothParams& params = {});
+
+// Drape vertices selected by the scene's pins, for garment drape V.
+std::vector<int> pinned_vertices(const Scene& scene, const MatrixX3d& V);
+
+} // namespace foldsketch

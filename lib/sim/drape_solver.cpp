@@ -1,0 +1,307 @@
+#include "sim/drape_solver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Eigenvalues>
+
+#include "core/error.h"
+#include "sim/sparse_cholesky.h"
+
+namespace foldsketch {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Damping bounds of the quasi-static steps, as 1/h^2 [1/s^2]: below 1 s^-2 the mass term is
+// negligible next to any fabric stiffness (a vertex mass of 1e-5 kg against 1e2 N/m), above
+// 1e12 (h = 1 us) no step is possible and the solve has failed.
+constexpr double kMinDamping = 1e-6, kMaxDamping = 1e12;
+// Armijo sufficient-decrease constant and the smallest line-search step before giving up.
+constexpr double kArmijo = 1e-4, kMinStep = 1.0 / 1024;
+// Energy changes below this fraction of the summed magnitudes of the energy terms are
+// roundoff: near equilibrium the Armijo test cannot see them, and a full step that lowers the
+// force residual is taken instead.
+constexpr double kRoundoff = 1e-12;
+
+MatrixX3d moved(const MatrixX3d& x, const VectorXd& dx, const std::vector<int>& free_vertices, double alpha) {
+  MatrixX3d y = x;
+  for (size_t a = 0; a < free_vertices.size(); ++a) y.row(free_vertices[a]) += alpha * dx.segment<3>(3 * static_cast<long>(a)).transpose();
+  return y;
+}
+
+} // namespace
+
+DrapeSettings drape_settings(const SimulatorSettings& scene) {
+  DrapeSettings s;
+  s.mode = scene.mode;
+  s.preset = scene.preset;
+  s.time_step = scene.time_step;
+  s.max_steps = scene.max_steps;
+  s.tolerance = scene.tolerance;
+  return s;
+}
+
+double max_strain(const ClothModel& model, const MatrixX3d& x) {
+  double worst = 0.0;
+  for (size_t t = 0; t < model.triangles.size(); ++t) {
+    const auto& v = model.triangles[t];
+    const Eigen::Vector3d e = green_strain(x.row(v[0]), x.row(v[1]), x.row(v[2]), model.rest[t]);
+    const Eigen::Matrix2d E = (Eigen::Matrix2d() << e(0), e(2), e(2), e(1)).finished();
+    const double largest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(E, Eigen::EigenvaluesOnly).eigenvalues()(1);
+    worst = std::max(worst, std::sqrt(std::max(0.0, 1.0 + 2.0 * largest)) - 1.0);
+  }
+  return worst;
+}
+
+double max_penetration(const ClothModel& model, const MatrixX3d& x) {
+  if (!model.body) return 0.0;
+  double deepest = 0.0;
+  for (int v = 0; v < x.rows(); ++v) deepest = std::max(deepest, -model.body->at(x.row(v)).distance);
+  return deepest;
+}
+
+DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const DrapeSettings& settings,
+                        const DrapeProgress& progress) {
+  const auto start = Clock::now();
+  if (initial.rows() != model.vertex_count) throw ArgumentError("solve_drape: initial drape has the wrong number of vertices");
+  if (!initial.allFinite()) throw ArgumentError("solve_drape: the initial drape has NaN or Inf coordinates");
+  DrapeResult result;
+  DrapeStats& stats = result.stats;
+  MatrixX3d x = initial;
+  for (const Pin& p : model.pins) x.row(p.vertex) = p.position.transpose();
+
+  const ClothEnergy energy(model);
+  const int n = energy.free_count();
+  const VectorXd& mass = energy.free_mass();
+  const bool fast = settings.preset == SolverPreset::Fast;
+  const HessianKind membrane_kind = fast ? HessianKind::GaussNewton : settings.membrane_hessian;
+  const HessianKind bending_kind = fast ? HessianKind::GaussNewton : settings.bending_hessian;
+  const double tolerance = settings.tolerance * (fast ? settings.fast_tolerance_factor : 1.0);
+  const bool dynamic = settings.mode == SimulationMode::Dynamic;
+
+  // Residual scale: the weight of the free cloth; without gravity, a membrane force (stretch
+  // stiffness times the square root of the cloth's area).
+  double scale = energy.gravity_force().norm();
+  if (!(scale > 0.0)) scale = std::max(model.material.stretch_warp, model.material.stretch_weft) * std::sqrt(model.contact_area.sum());
+  const double work_scale = scale * std::max(1e-3, (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm());
+
+  SparseCholesky cholesky;
+  SparseMatrix A = energy.pattern();
+  VectorXd velocity = VectorXd::Zero(3 * n);
+  double h = settings.time_step;
+  double damping = 1.0 / (h * h);
+  int reused = 0;
+  bool factor_current = false;
+
+  // The incremental potential Phi(y) = E(y) + |y - x_hat|^2_M / (2 h^2), x_hat = x_n + h v_n
+  // (v_n = 0 in static mode), with damping = 1/h^2.
+  MatrixX3d x_step = x;
+  const auto inertia = [&](const MatrixX3d& y, VectorXd* grad) {
+    double value = 0.0;
+    for (int a = 0; a < n; ++a) {
+      const int v = energy.free_vertices()[a];
+      Eigen::Vector3d d = (y.row(v) - x_step.row(v)).transpose();
+      if (dynamic) d -= h * velocity.segment<3>(3 * a);
+      value += 0.5 * damping * mass(3 * a) * d.squaredNorm();
+      if (grad) grad->segment<3>(3 * a) += damping * mass(3 * a) * d;
+    }
+    return value;
+  };
+  // Energy (and derivatives) of E alone; timing kept per phase.
+  const auto evaluate = [&](const MatrixX3d& y, VectorXd* grad, SparseMatrix* hess) {
+    const auto t0 = Clock::now();
+    const EnergyTerms e = energy.evaluate(y, grad, hess, membrane_kind, bending_kind);
+    stats.seconds_assembly += since(t0);
+    return e;
+  };
+  const auto phi_only = [&](const MatrixX3d& y) {
+    const double value = evaluate(y, nullptr, nullptr).total() + inertia(y, nullptr);
+    return std::isfinite(value) ? value : std::numeric_limits<double>::infinity();
+  };
+  const auto report = [&] {
+    stats.factorizations = cholesky.factorizations();
+    stats.seconds_factorization = cholesky.factorize_seconds() + cholesky.analyze_seconds();
+    stats.seconds_solve = cholesky.solve_seconds();
+    stats.seconds_total = since(start);
+    if (progress) progress(stats);
+  };
+
+  // One damped Newton iteration on Phi from x, given Phi's gradient g there and, when
+  // `have_hessian`, E's Hessian in A. Returns false when no step lowered Phi.
+  double applied_damping = 0.0;  // damping already added to A since its last assembly
+  const auto newton_iteration = [&](VectorXd& g, bool have_hessian) {
+    const double phi = phi_only(x);
+    if (have_hessian) applied_damping = 0.0;
+    for (int attempt = 0; attempt < 60; ++attempt) {
+      if (!have_hessian && !factor_current) {
+        VectorXd ignored;
+        evaluate(x, &ignored, &A);
+        applied_damping = 0.0;
+        have_hessian = true;
+      }
+      if (!factor_current) {
+        energy.add_mass(A, damping - applied_damping);
+        applied_damping = damping;
+        factor_current = cholesky.factorize(A);
+        reused = 0;
+        if (!factor_current) {  // not positive definite: more damping on the same Hessian
+          damping *= 10.0;
+          if (damping > kMaxDamping) return false;
+          continue;
+        }
+      }
+      ++stats.newton_iterations;
+      ++reused;
+      VectorXd dx = cholesky.solve(-g);
+      double slope = g.dot(dx);
+      if (!(slope < 0.0)) {  // a stale factorisation that no longer descends: refresh it
+        factor_current = false;
+        continue;
+      }
+      double largest = 0.0;
+      for (int a = 0; a < n; ++a) largest = std::max(largest, dx.segment<3>(3 * a).norm());
+      if (model.body && largest > settings.max_displacement) {
+        dx *= settings.max_displacement / largest;
+        slope *= settings.max_displacement / largest;
+        largest = settings.max_displacement;
+      }
+      const auto t0 = Clock::now();
+      double alpha = 1.0;
+      MatrixX3d trial = moved(x, dx, energy.free_vertices(), alpha);
+      while (phi_only(trial) > phi + kArmijo * alpha * slope && alpha >= kMinStep) {
+        alpha *= 0.5;
+        trial = moved(x, dx, energy.free_vertices(), alpha);
+      }
+      if (alpha < kMinStep) {  // in the roundoff regime, judge the full step by its forces
+        const EnergyTerms& e = stats.energy;
+        const double magnitude = std::abs(e.membrane) + std::abs(e.bending) + std::abs(e.gravity) + std::abs(e.stitches) +
+                                 std::abs(e.contact) + std::abs(phi);
+        MatrixX3d full = moved(x, dx, energy.free_vertices(), 1.0);
+        if (phi_only(full) <= phi + kRoundoff * magnitude) {
+          VectorXd g_full;
+          evaluate(full, &g_full, nullptr);
+          inertia(full, &g_full);
+          if (g_full.norm() < g.norm()) {
+            alpha = 1.0;
+            trial = std::move(full);
+          }
+        }
+      }
+      stats.seconds_line_search += since(t0);
+      if (alpha < kMinStep) {  // no decrease along this direction
+        const bool stale = fast && reused > 1;
+        factor_current = false;
+        if (!stale) {
+          damping *= 10.0;
+          if (damping > kMaxDamping) return false;
+        }
+        continue;
+      }
+      x = std::move(trial);
+      stats.step_fraction = alpha;
+      stats.step_length = alpha * largest;
+      stats.damping = damping;
+      if (!dynamic) {
+        stats.kinetic_energy = 0.5 * damping * alpha * alpha * dx.dot(mass.cwiseProduct(dx));
+        // Grow the quasi-static step after a full Newton step, shrink it after a cut one. A
+        // kept factorisation holds the old damping, which only makes its steps shorter.
+        damping = alpha == 1.0 ? std::max(kMinDamping, damping / 4.0) : std::min(kMaxDamping, damping * 2.0);
+        if (!fast) factor_current = false;
+      }
+      return true;
+    }
+    return false;
+  };
+
+  for (int iteration = 0;; ++iteration) {
+    // E's gradient (and, when a factorisation is due, its Hessian) at the current drape.
+    const bool refresh = !fast || !factor_current || reused >= settings.reuse_limit || dynamic;
+    VectorXd g;
+    stats.energy = evaluate(x, &g, refresh ? &A : nullptr);
+    if (refresh) factor_current = false;
+    stats.residual = n > 0 ? g.norm() / scale : 0.0;
+    if (dynamic) stats.kinetic_energy = 0.5 * velocity.dot(mass.cwiseProduct(velocity));
+    if (!std::isfinite(stats.residual)) {
+      stats.message = "diverged: the forces became NaN or infinite";
+      break;
+    }
+    const bool at_rest = !dynamic || stats.kinetic_energy <= settings.tolerance * work_scale;
+    if (stats.residual <= tolerance && at_rest) {
+      stats.converged = true;
+      stats.message = "converged";
+      break;
+    }
+    if (iteration >= settings.max_steps) {
+      char text[200];
+      std::snprintf(text, sizeof text, "stopped after %d %s with relative residual %.3g above %.3g", settings.max_steps,
+                    dynamic ? "time steps" : "iterations", stats.residual, tolerance);
+      stats.message = text;
+      break;
+    }
+
+    x_step = x;
+    if (!dynamic) {
+      if (!newton_iteration(g, refresh)) {
+        stats.message = "stopped: no step lowers the energy (damping exceeded its bound); the drape is left where it was";
+        break;
+      }
+    } else {
+      // Newton on Phi until its gradient is small, else halve the step and retry.
+      bool settled = false;
+      VectorXd gphi = g;
+      inertia(x, &gphi);
+      for (int k = 0; k < 30 && !settled; ++k) {
+        if (k > 0) {
+          gphi.setZero();
+          evaluate(x, &gphi, &A);
+          factor_current = false;
+          inertia(x, &gphi);
+          if (gphi.norm() <= 0.1 * tolerance * scale) { settled = true; break; }
+        }
+        if (!newton_iteration(gphi, true)) break;
+        if (k == 0 && false) break;
+      }
+      if (!settled) {
+        VectorXd gphi_end;
+        evaluate(x, &gphi_end, nullptr);
+        inertia(x, &gphi_end);
+        settled = gphi_end.norm() <= 0.1 * tolerance * scale + 1e-3 * scale;
+      }
+      if (!settled) {
+        x = x_step;
+        h *= 0.5;
+        damping = 1.0 / (h * h);
+        factor_current = false;
+        if (h < 1e-6) {
+          stats.message = "stopped: the time step fell below 1 us without a converged step";
+          break;
+        }
+        continue;
+      }
+      for (int a = 0; a < n; ++a) {
+        const int v = energy.free_vertices()[a];
+        velocity.segment<3>(3 * a) = (x.row(v) - x_step.row(v)).transpose() / h;
+      }
+      if (h < settings.time_step) h = std::min(settings.time_step, 2.0 * h);
+      damping = 1.0 / (h * h);
+    }
+    ++stats.steps;
+    report();
+  }
+  if (!x.allFinite()) {
+    x = initial;
+    stats.converged = false;
+    stats.message = "diverged: NaN in the drape; returning the initial drape";
+  }
+  result.V = std::move(x);
+  stats.max_strain = max_strain(model, result.V);
+  stats.max_penetration = max_penetration(model, result.V);
+  report();
+  return result;
+}
+
+} // namespace foldsketch

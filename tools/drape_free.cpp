@@ -1,0 +1,130 @@
+// drape-free: plain cloth simulation from patterns and an initial drape to equilibrium.
+#include <cstdio>
+#include <iostream>
+#include <unistd.h>
+
+#include "cli.h"
+#include "core/error.h"
+#include "formats/body_mesh.h"
+#include "formats/garment_io.h"
+#include "formats/json_writer.h"
+#include "formats/scene_xml.h"
+#include "sim/drape_solver.h"
+
+namespace foldsketch {
+namespace {
+
+HessianKind hessian_kind(const std::string& name) {
+  return name == "exact" ? HessianKind::Exact : name == "projected" ? HessianKind::Projected : HessianKind::GaussNewton;
+}
+
+std::string human(const DrapeStats& s, double tolerance) {
+  char line[1024];
+  std::snprintf(line, sizeof line,
+                "drape-free: %s: %d steps, %d Newton iterations, %d factorisations; relative force residual %.2e "
+                "(tolerance %.0e, 2-norm over free vertices / weight); max strain %.3f %%; deepest body penetration "
+                "%.3f mm\ndrape-free: time %.2f s (assembly %.2f, factorisation %.2f, solve %.2f, line search %.2f)\n",
+                s.message.c_str(), s.steps, s.newton_iterations, s.factorizations, s.residual, tolerance, 100 * s.max_strain,
+                1000 * s.max_penetration, s.seconds_total, s.seconds_assembly, s.seconds_factorization, s.seconds_solve,
+                s.seconds_line_search);
+  return line;
+}
+
+std::string json(const DrapeStats& s, double tolerance, const std::string& output, bool written) {
+  JsonWriter j;
+  j.begin_object().key("converged").value(s.converged).key("message").value(s.message);
+  j.key("output").value(written ? output : "").key("steps").value(s.steps).key("newton_iterations").value(s.newton_iterations);
+  j.key("factorizations").value(s.factorizations).key("residual").value(s.residual).key("tolerance").value(tolerance);
+  j.key("energy_J").begin_object().key("membrane").value(s.energy.membrane).key("bending").value(s.energy.bending);
+  j.key("gravity").value(s.energy.gravity).key("stitches").value(s.energy.stitches).key("contact").value(s.energy.contact).end_object();
+  j.key("max_strain").value(s.max_strain).key("max_penetration_m").value(s.max_penetration);
+  j.key("time_s").begin_object().key("assembly").value(s.seconds_assembly).key("factorization").value(s.seconds_factorization);
+  j.key("solve").value(s.seconds_solve).key("line_search").value(s.seconds_line_search).key("total").value(s.seconds_total).end_object();
+  j.end_object();
+  return j.str() + "\n";
+}
+
+} // namespace
+} // namespace foldsketch
+
+int main(int argc, char** argv) {
+  using namespace foldsketch;
+  CLI::App app{"Reads a scene.xml (garment, body, material, pins, solver settings), takes the rest shape from the\n"
+               "patterns (vt of --patterns, default the scene's garment) and the start from an initial drape\n"
+               "(v of --init, default the same garment), simulates the cloth alone to equilibrium and writes the\n"
+               "garment OBJ with the equilibrium drape (metres). Reports steps, Newton iterations, factorisations,\n"
+               "relative force residual, max strain, deepest body penetration and time per phase.\n"
+               "Exit 1 when it does not converge (nothing written unless --write-unconverged).",
+               "drape-free"};
+  std::string scene_path, patterns_path, init_path, output;
+  std::string preset;
+  double tolerance = 0;
+  int max_steps = 0;
+  bool as_json = false, write_unconverged = false, trace = false;
+  app.add_option("scene", scene_path, "scene XML")->required();
+  app.add_option("--patterns", patterns_path, "garment OBJ whose vt are the rest shape (default: the scene's garment)");
+  app.add_option("--init", init_path, "garment OBJ whose v are the initial drape (default: the patterns file)");
+  app.add_option("-o,--output", output, "garment OBJ to write")->required();
+  app.add_option("--preset", preset, "solver preset, overriding the scene")->check(CLI::IsMember({"accurate", "fast"}));
+  app.add_option("--tolerance", tolerance, "relative force residual, overriding the scene")->check(CLI::PositiveNumber);
+  app.add_option("--max-steps", max_steps, "iterations or time steps, overriding the scene")->check(CLI::PositiveNumber);
+  app.add_flag("--json", as_json, "print one line of JSON");
+  app.add_flag("--trace", trace, "print every iteration on standard error");
+  std::string bending_hessian;
+  app.add_option("--bending-hessian", bending_hessian, "accurate preset's hinge Hessian (for measurements)")
+      ->check(CLI::IsMember({"projected", "gauss-newton", "exact"}));
+  std::string membrane_hessian;
+  app.add_option("--membrane-hessian", membrane_hessian, "accurate preset's triangle Hessian (for measurements)")
+      ->check(CLI::IsMember({"projected", "gauss-newton", "exact"}));
+  app.add_flag("--write-unconverged", write_unconverged, "write the drape even when it did not converge");
+  return run_tool(app, argc, argv, [&] {
+    const Scene scene = read_scene_xml(scene_path);
+    if (patterns_path.empty()) patterns_path = scene_relative(scene_path, scene.garment_file);
+    Garment garment = read_garment(patterns_path);
+    if (!init_path.empty()) {
+      const Garment init = read_garment(init_path);
+      if (init.V.rows() != garment.V.rows() || init.F != garment.F)
+        throw InputError(init_path, 0, "the initial drape's mesh differs from the patterns' (" + std::to_string(init.V.rows()) +
+                                           " vs " + std::to_string(garment.V.rows()) + " drape vertices)");
+      garment.V = init.V;
+    }
+    std::optional<TriangleMesh> body;
+    if (scene.physics.body_contact && scene.body) body = read_body_mesh(scene_relative(scene_path, scene.body->file));
+    std::vector<int> pinned;
+    ClothModel model;
+    try {
+      pinned = pinned_vertices(scene, garment.V);
+      model = cloth_model(garment, scene, body ? &*body : nullptr, pinned);
+    } catch (const ArgumentError& e) {
+      throw InputError(scene_path, 0, e.what());
+    }
+    DrapeSettings settings = drape_settings(scene.simulator);
+    if (!preset.empty()) settings.preset = preset == "fast" ? SolverPreset::Fast : SolverPreset::Accurate;
+    if (tolerance > 0) settings.tolerance = tolerance;
+    if (max_steps > 0) settings.max_steps = max_steps;
+    if (!bending_hessian.empty())
+      settings.bending_hessian = hessian_kind(bending_hessian);
+    if (!membrane_hessian.empty()) settings.membrane_hessian = hessian_kind(membrane_hessian);
+    const bool terminal = ::isatty(STDERR_FILENO);
+    const DrapeResult result = solve_drape(model, garment.V, settings, [&](const DrapeStats& s) {
+      if (trace)
+        std::fprintf(stderr, "iteration %d residual %.3e energy %.6e step %.3g move %.3g mm damping %.3g factorisations %d time %.2f s\n",
+                     s.newton_iterations, s.residual, s.energy.total(), s.step_fraction, 1000 * s.step_length, s.damping,
+                     s.factorizations, s.seconds_total);
+      else if (terminal)
+        std::fprintf(stderr, "\rdrape-free: iteration %d, residual %.2e, %.1f s   ", s.newton_iterations, s.residual, s.seconds_total);
+    });
+    if (terminal && !trace) std::fprintf(stderr, "\n");
+    const double effective_tolerance =
+        settings.tolerance * (settings.preset == SolverPreset::Fast ? settings.fast_tolerance_factor : 1.0);
+    const bool write = result.stats.converged || write_unconverged;
+    if (write) {
+      garment.V = result.V;
+      write_garment(garment, output);
+    }
+    std::cout << (as_json ? json(result.stats, effective_tolerance, output, write) : human(result.stats, effective_tolerance));
+    if (!result.stats.converged)
+      throw std::runtime_error(std::string("did not converge (") + result.stats.message + ")" +
+                               (write ? "; wrote the unconverged drape as asked" : "; nothing written"));
+  });
+}
