@@ -100,14 +100,17 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   // The incremental potential Phi(y) = E(y) + |y - x_hat|^2_M / (2 h^2), x_hat = x_n + h v_n
   // (v_n = 0 in static mode), with damping = 1/h^2.
   MatrixX3d x_step = x;
+  // Dynamic mode adds the drag potential drag/(2h) |y - x_n|^2_M (force -drag M v_{n+1}).
   const auto inertia = [&](const MatrixX3d& y, VectorXd* grad) {
     double value = 0.0;
+    const double drag = dynamic ? settings.drag / h : 0.0;
     for (int a = 0; a < n; ++a) {
       const int v = energy.free_vertices()[a];
-      Eigen::Vector3d d = (y.row(v) - x_step.row(v)).transpose();
+      const Eigen::Vector3d moved_by = (y.row(v) - x_step.row(v)).transpose();
+      Eigen::Vector3d d = moved_by;
       if (dynamic) d -= h * velocity.segment<3>(3 * a);
-      value += 0.5 * damping * mass(3 * a) * d.squaredNorm();
-      if (grad) grad->segment<3>(3 * a) += damping * mass(3 * a) * d;
+      value += 0.5 * mass(3 * a) * (damping * d.squaredNorm() + drag * moved_by.squaredNorm());
+      if (grad) grad->segment<3>(3 * a) += mass(3 * a) * (damping * d + drag * moved_by);
     }
     return value;
   };
@@ -144,8 +147,9 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         have_hessian = true;
       }
       if (!factor_current) {
-        energy.add_mass(A, damping - applied_damping);
-        applied_damping = damping;
+        const double mass_term = damping + (dynamic ? settings.drag / h : 0.0);
+        energy.add_mass(A, mass_term - applied_damping);
+        applied_damping = mass_term;
         factor_current = cholesky.factorize(A);
         reused = 0;
         if (!factor_current) {  // not positive definite: more damping on the same Hessian

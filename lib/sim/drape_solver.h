@@ -26,6 +26,10 @@ struct DrapeSettings {
   SolverPreset preset = SolverPreset::Accurate;
   double time_step = 0.01;          // [s]: dynamic step, or the first quasi-static step
   int max_steps = 1000;             // Newton iterations (static) or time steps (dynamic)
+  // Dynamic mode: drag force -drag * M v [1/s] (air and internal friction), so a drape comes
+  // to rest: a cloth pendulum under backward Euler alone keeps swinging for tens of seconds at
+  // millisecond steps. 1/s halves a swing in about 0.7 s; our choice.
+  double drag = 1.0;
   double tolerance = 1e-6;          // relative force residual at convergence
   // Largest move of any vertex in one Newton iteration [m]: a penalty force cannot stop a
   // vertex that jumps through a body part in one step; 1 cm is under a limb's half width.

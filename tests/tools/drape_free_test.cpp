@@ -1,0 +1,69 @@
+// drape-free run as a batch job would: converged drapes written with exact pins, unconverged
+// ones not written (unless asked), bad input refused with a located message.
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "formats/garment_io.h"
+#include "formats/scene_xml.h"
+#include "sim/cloth_model.h"
+#include "support/test_support.h"
+
+namespace foldsketch {
+namespace {
+
+std::string make_sample_folder(const std::string& name, int triangles) {
+  const std::string folder = test::temp_folder() + "/" + name;
+  const auto r = test::run(test::tool_path("make-sample") + " " + name + " --triangles " + std::to_string(triangles) + " -o " + folder);
+  EXPECT_EQ(r.status, 0) << r.err;
+  return folder;
+}
+
+TEST(DrapeFree, ConvergesWithExactPinsAndReportsInJson) {
+  const std::string folder = make_sample_folder("flag", 600);
+  const std::string out = folder + "/draped.obj";
+  const auto r = test::run(test::tool_path("drape-free") + " --json " + folder + "/scene.xml -o " + out);
+  ASSERT_EQ(r.status, 0) << r.err << r.out;
+  const auto check = test::run("/usr/bin/python3 -c \"import json,sys; d=json.loads(sys.argv[1]); "
+                               "assert d['converged'] and d['residual'] <= 1e-6 and d['factorizations'] > 0, d\" '" + r.out + "'");
+  EXPECT_EQ(check.status, 0) << check.err;
+  const Garment before = read_garment(folder + "/garment.obj"), after = read_garment(out);
+  EXPECT_EQ(after.P, before.P);  // the patterns travel unchanged
+  EXPECT_EQ(after.F, before.F);
+  const Scene scene = read_scene_xml(folder + "/scene.xml");
+  const auto pinned = pinned_vertices(scene, before.V);
+  ASSERT_FALSE(pinned.empty());
+  for (int v : pinned) EXPECT_EQ(after.V.row(v), before.V.row(v)) << "pin " << v << " moved";
+  EXPECT_GT((after.V - before.V).norm(), 0.01);  // and the rest did drape
+}
+
+TEST(DrapeFree, UnconvergedDrapeIsNotWrittenUnlessAsked) {
+  const std::string folder = make_sample_folder("flag", 600);
+  const std::string out = folder + "/draped.obj";
+  const auto r = test::run(test::tool_path("drape-free") + " --max-steps 2 " + folder + "/scene.xml -o " + out);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("drape-free: did not converge (stopped after 2 iterations"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("nothing written"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  const auto kept = test::run(test::tool_path("drape-free") + " --max-steps 2 --write-unconverged " + folder + "/scene.xml -o " + out);
+  EXPECT_EQ(kept.status, 1);
+  EXPECT_TRUE(std::filesystem::exists(out));
+  EXPECT_NE(kept.err.find("wrote the unconverged drape as asked"), std::string::npos) << kept.err;
+}
+
+TEST(DrapeFree, BadInputIsLocatedAndWritesNothing) {
+  const std::string folder = make_sample_folder("flag", 600);
+  test::write_text(folder + "/bad.xml", "<scene>\n<garment file=\"garment.obj\"/>\n<material preset=\"tweed\"/>\n</scene>\n");
+  const auto r = test::run(test::tool_path("drape-free") + " " + folder + "/bad.xml -o " + folder + "/out.obj");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err.rfind("drape-free: " + folder + "/bad.xml:3: unknown material preset 'tweed'", 0), 0u) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(folder + "/out.obj"));
+  test::write_text(folder + "/self.xml", "<scene>\n<garment file=\"garment.obj\"/>\n<material preset=\"silk\"/>\n"
+                                         "<physics body-contact=\"false\" self-contact=\"true\"/>\n</scene>\n");
+  const auto refused = test::run(test::tool_path("drape-free") + " " + folder + "/self.xml -o " + folder + "/out.obj");
+  EXPECT_EQ(refused.status, 1);
+  EXPECT_NE(refused.err.find("self-contact, which the engine does not model yet"), std::string::npos) << refused.err;
+}
+
+} // namespace
+} // namespace foldsketch
