@@ -1,0 +1,20 @@
+# Time against error and time against size, from drape_bench's CSV.
+# Usage: gnuplot -e "csv='bench/drape_bench.csv'; out='bench/drape_bench.png'" bench/plot_drape.gp
+set datafile separator ','
+set terminal pngcairo size 1100,450 font ',10'
+set output out
+set multiplot layout 1,2
+set logscale xy
+set grid
+set key top left
+set title 'Skirt drape: wall time against error (vs tight reference)'
+set xlabel 'mean vertex error [mm]'
+set ylabel 'median wall time [s]'
+plot csv using ($8 > 0 ? $8 : 1e-4):(strcol(2) eq 'accurate' ? $3 : 1/0) skip 1 with linespoints title 'accurate', \
+     csv using ($8 > 0 ? $8 : 1e-4):(strcol(2) eq 'fast' ? $3 : 1/0) skip 1 with linespoints title 'fast'
+set title 'Skirt drape: wall time against size'
+set xlabel 'triangles'
+set ylabel 'median wall time [s]'
+plot csv using 1:(strcol(2) eq 'accurate' ? $3 : 1/0) skip 1 with linespoints title 'accurate', \
+     csv using 1:(strcol(2) eq 'fast' ? $3 : 1/0) skip 1 with linespoints title 'fast'
+unset multiplot
