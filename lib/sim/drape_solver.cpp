@@ -78,8 +78,8 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   const int n = energy.free_count();
   const VectorXd& mass = energy.free_mass();
   const bool fast = settings.preset == SolverPreset::Fast;
-  const HessianKind membrane_kind = fast ? HessianKind::GaussNewton : settings.membrane_hessian;
-  const HessianKind bending_kind = fast ? HessianKind::GaussNewton : settings.bending_hessian;
+  const HessianKind membrane_kind = settings.membrane_hessian;
+  const HessianKind bending_kind = settings.bending_hessian;
   const double tolerance = settings.tolerance * (fast ? settings.fast_tolerance_factor : 1.0);
   const bool dynamic = settings.mode == SimulationMode::Dynamic;
 
