@@ -12,7 +12,7 @@
 #include "formats/garment_io.h"
 #include "formats/json_writer.h"
 #include "formats/scene_xml.h"
-#include "garment/pins.h"
+#include "sim/cloth_model.h"
 #include "metrics/garment_summary.h"
 
 namespace foldsketch {
@@ -177,16 +177,11 @@ int main(int argc, char** argv) {
     }
     const Garment g = read_garment(garment_path);
     if (scene) {
-      std::vector<int> pinned;
-      for (const PinSelector& p : scene->scene.pins) {
-        if (p.box) for (int v : vertices_in_box(g.V, *p.box)) pinned.push_back(v);
-        for (int v : p.vertices) {
-          if (v >= g.V.rows())
-            throw InputError(input, 0, "a pin names drape vertex " + std::to_string(v + 1) + " but the garment has " + std::to_string(g.V.rows()));
-          pinned.push_back(v);
-        }
+      try {
+        scene->pinned = static_cast<int>(pinned_vertices(scene->scene, g.V).size());
+      } catch (const ArgumentError& e) {
+        throw InputError(input, 0, e.what());
       }
-      scene->pinned = static_cast<int>(pins_at(g.V, pinned).size());
     }
     const double read_ms = elapsed_ms(start);
     const auto analyse_start = std::chrono::steady_clock::now();
