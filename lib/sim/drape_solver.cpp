@@ -213,7 +213,8 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         stats.kinetic_energy = 0.5 * damping * alpha * alpha * dx.dot(mass.cwiseProduct(dx));
         // Grow the quasi-static step after a full Newton step, shrink it after a cut one. A
         // kept factorisation holds the old damping, which only makes its steps shorter.
-        damping = alpha == 1.0 ? std::max(kMinDamping, damping / 4.0) : std::min(kMaxDamping, damping * 2.0);
+        damping = alpha == 1.0 ? std::max(kMinDamping, damping / settings.damping_decrease)
+                               : std::min(kMaxDamping, damping * settings.damping_increase);
         if (!fast) factor_current = false;
       }
       return true;
