@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include "sim/bending.h"
+#include "sim/cloth_energy.h"
 #include "sim/membrane.h"
+#include "support/test_support.h"
 
 namespace foldsketch {
 namespace {
@@ -115,6 +117,56 @@ TEST(Bending, FlatHingeHasZeroAngleAndSignedFolds) {
   const double theta = dihedral_angle({0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -std::cos(a), std::sin(a)}, false).theta;
   EXPECT_NEAR(std::abs(theta), a, 1e-12);
   EXPECT_TRUE(dihedral_angle({0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0.5, -1, 0}, false).degenerate);
+}
+
+} // namespace
+} // namespace foldsketch
+
+namespace foldsketch {
+namespace {
+
+// The assembled energy (membrane, bending, gravity, a stitch, body contact; one vertex pinned)
+// against central differences over every free coordinate: checks the stitch, gravity and
+// contact terms and the sparse assembly itself. The garment lies over a box's top face, inside
+// the contact layer, where the contact Hessian k A n n^T is exact (flat face).
+TEST(Derivatives, AssembledEnergyWithEveryTerm) {
+  Garment g = test::two_sewn_squares();
+  g.P *= 0.1;
+  g.V *= 0.1;
+  std::mt19937 rng(5);
+  std::normal_distribution<double> noise(0.0, 0.01);
+  for (int v = 0; v < g.V.rows(); ++v) g.V.row(v) = Vector3d(g.V(v, 0) + 0.05, 0.301, g.V(v, 1) + 0.05) + 0.002 * Vector3d(noise(rng), noise(rng), noise(rng));
+  g.stitches.push_back({{0, -1, 0.0}, {2, 5, 0.3}});
+  Scene scene;
+  scene.material = *material_preset("cotton-thin");
+  scene.body = BodySettings{"box", 0.003};
+  const TriangleMesh box = box_mesh({0, 0, 0}, {0.5, 0.3, 0.5});
+  const ClothModel model = cloth_model(g, scene, &box, {4});
+  const ClothEnergy energy(model);
+  ASSERT_EQ(energy.free_count(), 5);
+
+  VectorXd g0;
+  SparseMatrix H;
+  const EnergyTerms terms = energy.evaluate(g.V, &g0, &H, HessianKind::Exact);
+  ASSERT_GT(terms.contact, 0.0);
+  ASSERT_GT(terms.stitches, 0.0);
+  const Eigen::MatrixXd dense = Eigen::MatrixXd(H);
+  const double h = 1e-7;
+  VectorXd g_fd(g0.size());
+  Eigen::MatrixXd H_fd(g0.size(), g0.size());
+  for (int a = 0; a < energy.free_count(); ++a)
+    for (int c = 0; c < 3; ++c) {
+      MatrixX3d plus = g.V, minus = g.V;
+      plus(energy.free_vertices()[a], c) += h;
+      minus(energy.free_vertices()[a], c) -= h;
+      VectorXd gp, gm;
+      const double ep = energy.evaluate(plus, &gp, nullptr, HessianKind::Exact).total();
+      const double em = energy.evaluate(minus, &gm, nullptr, HessianKind::Exact).total();
+      g_fd(3 * a + c) = (ep - em) / (2 * h);
+      H_fd.col(3 * a + c) = (gp - gm) / (2 * h);
+    }
+  EXPECT_LT(relative_error(g0, g_fd), kTolerance);
+  EXPECT_LT(relative_error(dense, H_fd), kTolerance);
 }
 
 } // namespace
