@@ -141,8 +141,8 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   // One damped Newton iteration on Phi from x, given Phi's gradient g there and, when
   // `have_hessian`, E's Hessian in A. Returns false when no step lowered Phi.
   double applied_damping = 0.0;  // damping already added to A since its last assembly
-  const auto newton_iteration = [&](VectorXd& g, bool have_hessian) {
-    const double phi = phi_only(x);
+  // phi: Phi(x), known to the caller from the evaluation that gave g.
+  const auto newton_iteration = [&](VectorXd& g, bool have_hessian, double phi) {
     if (have_hessian) applied_damping = 0.0;
     for (int attempt = 0; attempt < 60; ++attempt) {
       if (!have_hessian && !factor_current) {
@@ -255,7 +255,8 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
 
     x_step = x;
     if (!dynamic) {
-      if (!newton_iteration(g, refresh)) {
+      // At the start of a quasi-static step x = x_n, so Phi(x) = E(x), evaluated just above.
+      if (!newton_iteration(g, refresh, stats.energy.total())) {
         stats.message = "stopped: no step lowers the energy (damping exceeded its bound); the drape is left where it was";
         break;
       }
@@ -263,16 +264,16 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
       // Newton on Phi until its gradient is small, else halve the step and retry.
       bool settled = false;
       VectorXd gphi = g;
-      inertia(x, &gphi);
+      double phi = stats.energy.total() + inertia(x, &gphi);
       for (int k = 0; k < 30 && !settled; ++k) {
         if (k > 0) {
           gphi.setZero();
-          evaluate(x, &gphi, &A);
+          phi = evaluate(x, &gphi, &A).total();
           factor_current = false;
-          inertia(x, &gphi);
+          phi += inertia(x, &gphi);
           if (gphi.norm() <= 0.1 * tolerance * scale) { settled = true; break; }
         }
-        if (!newton_iteration(gphi, true)) break;
+        if (!newton_iteration(gphi, true, phi)) break;
       }
       if (!settled) {
         VectorXd gphi_end;
