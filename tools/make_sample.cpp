@@ -24,10 +24,14 @@ int main(int argc, char** argv) {
   app.add_option("-o,--output", folder, "folder to write (created if missing)")->required();
   app.add_option("--triangles", params.triangles, "target triangle count (result within a few %)")
       ->capture_default_str()->check(CLI::Range(50, 2000000));
+  std::string mesh = "grid";
+  app.add_option("--mesh", mesh, "grid (structured) or isotropic (better for bending)")->capture_default_str()
+      ->check(CLI::IsMember({"grid", "isotropic"}));
   app.add_option("--body", body_path, "body mesh for skirt and dress (OBJ, PLY, STL, glTF; metres)");
   app.add_flag("--json", json, "print a one-line JSON summary");
   return run_tool(app, argc, argv, [&] {
     const auto start = std::chrono::steady_clock::now();
+    params.mesh = mesh == "isotropic" ? SampleMesh::Isotropic : SampleMesh::Grid;
     std::optional<TriangleMesh> body;
     if (sample_needs_body(name)) {
       if (body_path.empty()) throw std::runtime_error("sample '" + name + "' needs --body");

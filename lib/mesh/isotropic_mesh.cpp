@@ -66,10 +66,24 @@ PlanarMesh isotropic_mesh(const MatrixX2d& outline, double spacing, const Isotro
   if (static_cast<size_t>(cdt.number_of_vertices()) != points.size())
     throw ArgumentError("isotropic_mesh: outline points coincide, or constraints crossed and added points");
 
+  // Inside faces by flood fill from the infinite face, counting crossings of the outline's
+  // constraints: exact, where testing a face's centroid is not (the centroid of a sliver along
+  // an outline that is straight only up to roundoff can land on either side).
+  std::map<Cdt::Face_handle, int> depth;
+  std::vector<Cdt::Face_handle> frontier{cdt.infinite_face()};
+  depth[cdt.infinite_face()] = 0;
+  for (size_t k = 0; k < frontier.size(); ++k) {
+    const Cdt::Face_handle f = frontier[k];
+    for (int i = 0; i < 3; ++i) {
+      const Cdt::Face_handle g = f->neighbor(i);
+      if (depth.count(g)) continue;
+      depth[g] = depth[f] + (cdt.is_constrained({f, i}) ? 1 : 0);
+      frontier.push_back(g);
+    }
+  }
   std::vector<std::array<int, 3>> faces;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-    const Point c = CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
-    if (CGAL::bounded_side_2(polygon.begin(), polygon.end(), c, Kernel()) != CGAL::ON_BOUNDED_SIDE) continue;
+    if (depth[f] % 2 == 0) continue;
     faces.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});  // CGAL faces are CCW
   }
   PlanarMesh mesh;

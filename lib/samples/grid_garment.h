@@ -24,6 +24,13 @@ struct GridPanel {
 // preferred shear direction) and weld drape nodes of all panels closer than weld_tolerance.
 Garment grid_garment(const std::vector<GridPanel>& panels, double weld_tolerance);
 
+// Mesh every panel isotropically instead (lib/mesh/isotropic_mesh.h, lattice spacing
+// `spacing` [m]) keeping the grid's boundary nodes, so panels sewn along a grid boundary stay
+// sewable; interior points are placed in the drape by the grid's own piecewise-linear map.
+// Hinge bending is measurably too soft on edge-aligned grids (tests/lib/sim/physics_test.cpp),
+// so the engine wants these meshes.
+Garment isotropic_garment(const std::vector<GridPanel>& panels, double spacing, double weld_tolerance);
+
 // A flat rectangular panel of nu x nv cells, width x height [m] in the pattern (x across, y up);
 // in the drape, pattern (u, v) sits at origin + u * across + v * up (unit vectors).
 GridPanel flat_panel(const std::string& name, int nu, int nv, double width, double height, const Vector3d& origin,

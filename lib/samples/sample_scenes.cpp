@@ -28,6 +28,20 @@ int divisions(double length, double h) { return std::max(1, static_cast<int>(std
 // Edge length giving about `triangles` right-triangle pairs over `area`.
 double grid_spacing(double area, int triangles) { return std::sqrt(2.0 * area / std::max(triangles, 2)); }
 
+// The garment of the laid-out panels, meshed as asked. The isotropic lattice spacing gives
+// about params.triangles equilateral triangles over the panels' area: N = A / (sqrt(3)/4 s^2).
+Garment mesh_panels(const std::vector<GridPanel>& panels, const SampleParams& params) {
+  const Garment grid = grid_garment(panels, kWeldTolerance);
+  if (params.mesh == SampleMesh::Grid) return grid;
+  double area = 0.0;
+  for (int f = 0; f < grid.FP.rows(); ++f) {
+    const Vector2d a = grid.P.row(grid.FP(f, 0)), b = grid.P.row(grid.FP(f, 1)), c = grid.P.row(grid.FP(f, 2));
+    area += 0.5 * std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+  }
+  const double spacing = std::sqrt(4.0 * area / (std::sqrt(3.0) * std::max(params.triangles, 2)));
+  return isotropic_garment(panels, spacing, kWeldTolerance);
+}
+
 PinSelector pin_box(const Vector3d& lo, const Vector3d& hi) {
   PinSelector s;
   s.box = Eigen::AlignedBox3d(lo - Vector3d::Constant(kPinSlack), hi + Vector3d::Constant(kPinSlack));
@@ -65,7 +79,7 @@ SampleScene flag(const SampleParams& params) {
   }
   std::vector<GridPanel> panels{panel};
   SampleScene out;
-  out.garment = grid_garment(panels, kWeldTolerance);
+  out.garment = mesh_panels(panels, params);
   out.body = cylinder_mesh({0, 0}, kPoleRadius, 0.0, kPoleTop, 24);
   out.scene = base_scene("flag");
   out.scene.physics.body_contact = false;  // the flag hangs beside the pole, never against it
@@ -90,7 +104,7 @@ SampleScene box_cover(const SampleParams& params) {
   };
   lay_out_patterns(panels, kLayoutGap);
   SampleScene out;
-  out.garment = grid_garment(panels, kWeldTolerance);
+  out.garment = mesh_panels(panels, params);
   out.body = box_mesh(box_lo, box_hi);
   out.scene = base_scene("box-cover");
   return out;
@@ -225,7 +239,7 @@ SampleScene fitted_garment(const std::string& name, const std::vector<Tier>& tie
   }
   lay_out_patterns(panels, kLayoutGap);
   SampleScene out;
-  out.garment = grid_garment(panels, kWeldTolerance);
+  out.garment = mesh_panels(panels, params);
   out.scene = base_scene(name);
   const double far = 10.0;
   out.scene.pins.push_back(pin_box({-far, pin_y, -far}, {far, pin_y, far}));

@@ -17,8 +17,14 @@
 
 namespace foldsketch {
 
+enum class SampleMesh {
+  Grid,       // structured cells split by alternating diagonals
+  Isotropic   // jittered hexagonal lattice, grid boundary kept (better for hinge bending)
+};
+
 struct SampleParams {
   int triangles = 10000;        // target triangle count; the result is within a few percent
+  SampleMesh mesh = SampleMesh::Grid;
   double clearance = 0.01;      // gap between body and placed garment [m]; our choice
   double waist_to_hem = 0.55;   // skirt length [m]: natural waist to just above the knee
   double dress_waist_to_hem = 0.65;
