@@ -25,8 +25,8 @@ TEST(MakeSample, RegeneratesTheCommittedSamplesByteForByte) {
   std::filesystem::create_directories(root + "/bodies");
   std::filesystem::copy(test::source_path("samples/bodies/mean_all.obj"), root + "/bodies/mean_all.obj");
   for (const std::string name : {"flag", "skirt", "box-cover", "dress"}) {
-    const auto r = test::run(test::tool_path("make-sample") + " " + name + " --body " + root + "/bodies/mean_all.obj -o " +
-                             root + "/" + name);
+    const auto r = test::run(test::tool_path("make-sample") + " " + name + " --mesh isotropic --body " + root +
+                             "/bodies/mean_all.obj -o " + root + "/" + name);
     ASSERT_EQ(r.status, 0) << r.err;
     for (const std::string file : {"scene.xml", "body.obj"}) {
       const std::string committed = test::source_path("samples/" + name + "/" + file);
