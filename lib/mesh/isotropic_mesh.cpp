@@ -29,7 +29,8 @@ double segment_distance(const Vector2d& p, const Vector2d& a, const Vector2d& b)
 }
 } // namespace
 
-PlanarMesh isotropic_mesh(const MatrixX2d& outline, double spacing, const IsotropicMeshParams& params) {
+PlanarMesh isotropic_mesh(const MatrixX2d& outline, double spacing, const IsotropicMeshParams& params,
+                          const std::vector<MatrixX2d>& holes) {
   const int n = static_cast<int>(outline.rows());
   if (n < 3 || !(spacing > 0.0)) throw ArgumentError("isotropic_mesh: need an outline of 3+ points and a positive spacing");
   std::vector<Point> polygon;
@@ -38,8 +39,25 @@ PlanarMesh isotropic_mesh(const MatrixX2d& outline, double spacing, const Isotro
   if (CGAL::orientation_2(polygon.begin(), polygon.end(), Kernel()) != CGAL::COUNTERCLOCKWISE)
     throw ArgumentError("isotropic_mesh: the outline must be counter-clockwise");
 
+  std::vector<std::vector<Point>> hole_polygons;
+  for (const MatrixX2d& h : holes) {
+    std::vector<Point> hole;
+    for (int i = 0; i < h.rows(); ++i) hole.emplace_back(h(i, 0), h(i, 1));
+    if (hole.size() < 3 || !CGAL::is_simple_2(hole.begin(), hole.end(), Kernel()))
+      throw ArgumentError("isotropic_mesh: a hole needs 3+ points and must not cross itself");
+    hole_polygons.push_back(hole);
+  }
+
+  // Outline points, then each hole's; the constraints are the closed loops between them.
   std::vector<Vector2d> points;
-  for (int i = 0; i < n; ++i) points.emplace_back(outline.row(i).transpose());
+  std::vector<std::pair<int, int>> constraints;
+  const auto add_loop = [&](const MatrixX2d& loop) {
+    const int first = static_cast<int>(points.size()), count = static_cast<int>(loop.rows());
+    for (int i = 0; i < count; ++i) points.emplace_back(loop.row(i).transpose());
+    for (int i = 0; i < count; ++i) constraints.emplace_back(first + i, first + (i + 1) % count);
+  };
+  add_loop(outline);
+  for (const MatrixX2d& h : holes) add_loop(h);
   // Hexagonal lattice over the bounding box, jittered, kept inside and clear of the outline.
   const Vector2d lo = outline.colwise().minCoeff(), hi = outline.colwise().maxCoeff();
   std::mt19937 rng(params.seed);
@@ -51,8 +69,12 @@ PlanarMesh isotropic_mesh(const MatrixX2d& outline, double spacing, const Isotro
       const Vector2d p = base + Vector2d(jitter(rng), jitter(rng));
       if (CGAL::bounded_side_2(polygon.begin(), polygon.end(), Point(p.x(), p.y()), Kernel()) != CGAL::ON_BOUNDED_SIDE) continue;
       bool clear = true;
-      for (int k = 0; k < n && clear; ++k)
-        clear = segment_distance(p, outline.row(k), outline.row((k + 1) % n)) >= params.boundary_clearance * spacing;
+      for (const auto& hole : hole_polygons)
+        clear = clear && CGAL::bounded_side_2(hole.begin(), hole.end(), Point(p.x(), p.y()), Kernel()) == CGAL::ON_UNBOUNDED_SIDE;
+      for (const auto& [a, b] : constraints) {
+        if (!clear) break;
+        clear = segment_distance(p, points[a], points[b]) >= params.boundary_clearance * spacing;
+      }
       if (clear) points.push_back(p);
     }
 
@@ -62,7 +84,7 @@ PlanarMesh isotropic_mesh(const MatrixX2d& outline, double spacing, const Isotro
     handles.push_back(cdt.insert(Point(points[i].x(), points[i].y())));
     handles.back()->info() = static_cast<int>(i);
   }
-  for (int k = 0; k < n; ++k) cdt.insert_constraint(handles[k], handles[(k + 1) % n]);
+  for (const auto& [a, b] : constraints) cdt.insert_constraint(handles[a], handles[b]);
   if (static_cast<size_t>(cdt.number_of_vertices()) != points.size())
     throw ArgumentError("isotropic_mesh: outline points coincide, or constraints crossed and added points");
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "core/types.h"
 
@@ -25,7 +26,10 @@ struct IsotropicMeshParams {
 };
 
 // Constrained Delaunay triangulation (CGAL) of the closed polygon `outline` (#O by 2,
-// counter-clockwise, simple) with interior lattice points of the given spacing.
-PlanarMesh isotropic_mesh(const MatrixX2d& outline, double spacing, const IsotropicMeshParams& params = {});
+// counter-clockwise, simple) minus the `holes` (simple polygons inside it, disjoint, any
+// orientation), with interior lattice points of the given spacing. P lists the outline's
+// vertices first, then each hole's, in order.
+PlanarMesh isotropic_mesh(const MatrixX2d& outline, double spacing, const IsotropicMeshParams& params = {},
+                          const std::vector<MatrixX2d>& holes = {});
 
 } // namespace foldsketch

@@ -2,6 +2,8 @@
 
 #include <cstdlib>
 
+#include "mesh/isotropic_mesh.h"
+
 #include <Eigen/Geometry>
 #include <filesystem>
 #include <fstream>
@@ -58,6 +60,20 @@ Garment square_panel(int n, double size) {
   g.FP = g.F;
   g.face_panel = VectorXi::Zero(g.F.rows());
   g.panels = {{"square"}};
+  return g;
+}
+
+Garment polygon_panel(const std::string& name, const MatrixX2d& outline, double spacing,
+                      const std::vector<MatrixX2d>& holes) {
+  const PlanarMesh mesh = isotropic_mesh(outline, spacing, {}, holes);
+  Garment g;
+  g.P = mesh.P;
+  g.V = MatrixX3d::Zero(mesh.P.rows(), 3);
+  g.V.leftCols<2>() = mesh.P;
+  g.F = mesh.F;
+  g.FP = mesh.F;
+  g.face_panel = VectorXi::Zero(mesh.F.rows());
+  g.panels = {Panel{name}};
   return g;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "garment/garment.h"
 
@@ -21,6 +22,11 @@ Garment square_panel(int n, double size = 1.0);
 
 // Two unit squares side by side, sewn along their shared edge by welding: "left" and "right".
 Garment two_sewn_squares();
+
+// One flat panel meshing the polygon `outline` (counter-clockwise) minus `holes`, isotropic
+// triangles of about `spacing` [m]; the drape is the pattern in the z = 0 plane.
+Garment polygon_panel(const std::string& name, const MatrixX2d& outline, double spacing,
+                      const std::vector<MatrixX2d>& holes = {});
 
 // Volume enclosed by a closed triangle mesh (divergence theorem): positive iff the triangles
 // face outwards.

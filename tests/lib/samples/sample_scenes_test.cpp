@@ -96,7 +96,7 @@ TEST(SampleScenes, IsotropicMeshesAreSoundAndSewn) {
     params.triangles = triangles;
     SampleParams iso = params;
     iso.mesh = SampleMesh::Isotropic;
-    for (const std::string name : sample_names()) {
+    for (const std::string& name : sample_names()) {
       const Garment grid = make_sample(name, params, &body()).garment;
       const Garment g = make_sample(name, iso, &body()).garment;
       ASSERT_EQ(garment_structure_error(g), "") << name;
