@@ -1,6 +1,7 @@
 #include "text_numbers.h"
 
 #include <charconv>
+#include <cstdio>
 
 namespace foldsketch {
 
@@ -24,6 +25,18 @@ std::string format_double(double x) {
   char buffer[64];
   const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
   return std::string(buffer, end);
+}
+
+std::string format_fixed(double x, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, x);
+  std::string s = buffer;
+  if (s.find('.') != std::string::npos) {
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+  }
+  if (s == "-0") s = "0";
+  return s;
 }
 
 } // namespace foldsketch

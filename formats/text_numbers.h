@@ -16,4 +16,7 @@ std::optional<long long> parse_integer(std::string_view token);
 // Shortest decimal spelling of x that parses back to exactly x.
 std::string format_double(double x);
 
+// x with at most `decimals` digits after the point, trailing zeros dropped ("12.5", "-3", "0").
+std::string format_fixed(double x, int decimals);
+
 } // namespace foldsketch

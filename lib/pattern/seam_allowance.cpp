@@ -72,22 +72,26 @@ void add_offset_pieces(const Loop2& loop, const AllowanceParams& params, std::ve
     const double turn = std::atan2(cross(t1, t2), t1.dot(t2));  // > 0: convex corner
     if (!(turn > 0.0)) continue;
     const Vector2d p1 = v + d * n1, p2 = v + d * n2;
-    std::vector<Vector2d> join{v, p1};
+    // The join as triangles: a triangle with area is always simple, where a near-straight
+    // quadrilateral v, p1, mitre, p2 can come out self-touching in floating point; a join left
+    // out would leave a crack in the union down to the sew line.
+    const auto add_triangle = [&](const Vector2d& a, const Vector2d& b, const Vector2d& c) {
+      if (auto triangle = ccw_polygon({a, b, c})) pieces.push_back(*triangle);
+    };
+    add_triangle(v, p1, p2);
     const double mitre_length = 1.0 / std::cos(0.5 * turn);  // in allowances
     if (turn < 3.0 && mitre_length <= params.mitre_limit) {
-      join.push_back(v + d * (n1 + n2) / (1.0 + n1.dot(n2)));
+      add_triangle(p1, v + d * (n1 + n2) / (1.0 + n1.dot(n2)), p2);
     } else {
       // Square the corner: cut the mitre perpendicular to the bisector at mitre_limit * d.
       const Vector2d sum = n1 + n2;
       const Vector2d b = sum.norm() > 1e-9 ? Vector2d(sum.normalized()) : t1;
       const double reach = params.mitre_limit * d;
-      const double s1 = (reach - d * n1.dot(b)) / t1.dot(b);
-      const double s2 = (reach - d * n2.dot(b)) / -t2.dot(b);
-      join.push_back(p1 + s1 * t1);
-      join.push_back(p2 - s2 * t2);
+      const Vector2d c1 = p1 + (reach - d * n1.dot(b)) / t1.dot(b) * t1;
+      const Vector2d c2 = p2 - (reach - d * n2.dot(b)) / -t2.dot(b) * t2;
+      add_triangle(p1, c1, c2);
+      add_triangle(p1, c2, p2);
     }
-    join.push_back(p2);
-    if (auto polygon = ccw_polygon(join); polygon && polygon->is_simple()) pieces.push_back(*polygon);
   }
 }
 

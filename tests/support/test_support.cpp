@@ -1,5 +1,6 @@
 #include "support/test_support.h"
 
+#include <cstdio>
 #include <cstdlib>
 
 #include "mesh/isotropic_mesh.h"
@@ -26,7 +27,12 @@ struct TempRoot {
     std::string pattern = (fsys::temp_directory_path() / "foldsketch-test-XXXXXX").string();
     root = mkdtemp(pattern.data());
   }
+  // FOLDSKETCH_KEEP_TEST_FILES=1 keeps the folder, to look at what a test wrote.
   ~TempRoot() {
+    if (std::getenv("FOLDSKETCH_KEEP_TEST_FILES")) {
+      std::fprintf(stderr, "test files kept in %s\n", root.c_str());
+      return;
+    }
     std::error_code ignored;
     fsys::remove_all(root, ignored);
   }

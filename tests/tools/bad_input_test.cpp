@@ -29,7 +29,7 @@ protected:
   void expect_obj_rejected(const std::string& text, const std::string& message_after_path) {
     const std::string path = folder + "/bad.obj";
     test::write_text(path, text);
-    for (const char* tool : {"garment-info", "export-ply"}) expect_rejected(tool, path, path + message_after_path);
+    for (const char* tool : {"garment-info", "export-ply", "export-dxf"}) expect_rejected(tool, path, path + message_after_path);
   }
   void expect_scene_rejected(const std::string& xml, const std::string& message_after_path) {
     const std::string path = folder + "/scene.xml";

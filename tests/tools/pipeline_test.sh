@@ -7,7 +7,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$repo"
 make --no-print-directory -f Makefile.pipeline BIN="$BIN" WORK="$work/skirt" > "$work/first.log"
-for f in info.txt info.json garment.ply pipeline.done; do
+for f in info.txt info.json garment.ply pieces.dxf pieces.svg pieces.png pieces.txt pipeline.done; do
   [ -s "$work/skirt/$f" ] || [ "$f" = pipeline.done ] || { echo "missing $work/skirt/$f"; exit 1; }
 done
 grep -q "^pipeline: read samples/skirt/scene.xml" "$work/first.log" || { echo "no summary line"; cat "$work/first.log"; exit 1; }
@@ -21,4 +21,5 @@ if make --no-print-directory -f Makefile.pipeline BIN="$BIN" SCENE="$work/bad" W
   echo "pipeline accepted a bad scene"; exit 1
 fi
 [ ! -e "$work/bad-out/info.txt" ] || { echo "bad run left info.txt"; exit 1; }
+[ ! -e "$work/bad-out/pieces.txt" ] && [ ! -e "$work/bad-out/pieces.dxf" ] || { echo "bad run left cutting patterns"; exit 1; }
 echo "1 passed, 0 failed"
