@@ -31,9 +31,12 @@ def fail(message):
 
 
 def read_obj_panels(path):
-    """Panel name -> list of boundary loops of the pattern, as lists of (x, y) in mm."""
-    vts, faces, group = [], {}, None
-    order = []
+    """Panel name -> list of boundary loops of the pattern, as lists of (x, y) in mm.
+
+    Panels are the `g`/`o` groups; a file without groups (ARCSim / Berkeley Garment Library) has
+    one panel per connected piece of pattern, named panel-1, panel-2... in the order of their
+    first face, its per-corner vt merged where a (v, vt) pair repeats."""
+    vts, faces, group, order = [], {}, None, []
     with open(path) as f:
         for line in f:
             parts = line.split()
@@ -47,7 +50,46 @@ def read_obj_panels(path):
                     faces[group] = []
                     order.append(group)
             elif parts[0] == "f":
-                faces[group].append([int(p.split("/")[1]) - 1 for p in parts[1:]])
+                corners = [(int(p.split("/")[0]) - 1, int(p.split("/")[1]) - 1) for p in parts[1:]]
+                for k in range(1, len(corners) - 1):
+                    faces.setdefault(group, []).append([corners[0], corners[k], corners[k + 1]])
+                if group is None and None not in order:
+                    order.append(None)
+    if order == [None]:
+        # Merge vt by (v, position); split into connected pieces.
+        key_id, remap = {}, []
+        tris = []
+        for tri in faces[None]:
+            ids = []
+            for v, t in tri:
+                key = (v, vts[t])
+                if key not in key_id:
+                    key_id[key] = len(key_id)
+                    remap.append(vts[t])
+                ids.append(key_id[key])
+            tris.append(ids)
+        parent = list(range(len(remap)))
+
+        def find(x):
+            while parent[x] != x:
+                parent[x] = parent[parent[x]]
+                x = parent[x]
+            return x
+        for a, b, c in tris:
+            for y in (b, c):
+                ra, ry = find(a), find(y)
+                if ra != ry:
+                    parent[ry] = ra
+        comp, grouped = {}, {}
+        for tri in tris:
+            r = find(tri[0])
+            if r not in comp:
+                comp[r] = f"panel-{len(comp) + 1}"
+                grouped[comp[r]] = []
+            grouped[comp[r]].append(tri)
+        vts, order, faces = remap, list(grouped), grouped
+    else:
+        faces = {g: [[t for _, t in tri] for tri in tris] for g, tris in faces.items()}
     panels = {}
     for name in order:
         count = {}

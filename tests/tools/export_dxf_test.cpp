@@ -57,6 +57,21 @@ INSTANTIATE_TEST_SUITE_P(Samples, ExportDxfSample,
                            return n;
                          });
 
+// Real garments (Berkeley Garment Library, ARCSim convention: no groups, per-corner vt). Their
+// seams are not all matched (gathers), so only the DXF and SVG checks apply.
+TEST(ExportDxf, BerkeleyGarmentLibraryGarments) {
+  if (!test::shared_available()) GTEST_SKIP() << "../shared/data/bgl is absent: BGL garments not exported";
+  for (const char* file : {"skirt/isotropic/skirt-iso.obj", "tshirt/isotropic/tshirt-iso.obj", "pants/isotropic/pants-iso.obj",
+                           "dress/isotropic/dress3-iso.obj"}) {
+    const std::string obj = test::shared_path(std::string("data/bgl/Garments/") + file);
+    const std::string folder = test::temp_folder();
+    const auto r = test::run(test::tool_path("export-dxf") + " " + obj + " -o " + folder + "/p.dxf --svg " + folder + "/p.svg");
+    ASSERT_EQ(r.status, 0) << file << ": " << r.err;
+    expect_check("dxf " + folder + "/p.dxf " + obj + " 10");
+    expect_check("svg " + folder + "/p.svg " + obj + " 10");
+  }
+}
+
 TEST(ExportDxf, NoAllowanceCutsOnTheOutlineAndStrictHoldsOnlyInserts) {
   export_and_check(test::source_path("samples/dress/scene.xml"), test::source_path("samples/dress/garment.obj"),
                    test::temp_folder(), 0.0, 6, "--strict");
