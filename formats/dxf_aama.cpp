@@ -131,7 +131,7 @@ void piece_block(DxfText& dxf, const std::vector<CuttingPiece>& pieces, const st
   };
   say("Piece Name: " + names[i]);
   say("Size: " + t.size);
-  say("Quantity: 1");
+  say("Quantity: " + std::to_string(piece.quantity));
   say("Category: " + t.category);
   say("Annotation: " + cutting_instruction(pieces, names, i) + "; seam allowance " + number(t.seam_allowance * kMm) + " mm");
   say("Material: " + t.material);
@@ -227,7 +227,10 @@ std::vector<std::string> piece_block_names(const std::vector<CuttingPiece>& piec
 
 std::string cutting_instruction(const std::vector<CuttingPiece>& pieces, const std::vector<std::string>& names, int i) {
   const CuttingPiece& piece = pieces[i];
-  if (!piece.partner) return "cut 1";
+  if (piece.quantity == 2)
+    return piece.partner_match == PanelMatch::Mirror ? "cut pair (" + piece.name + " and its mirror image " + piece.merged + ")"
+                                                     : "cut 2 (" + piece.name + " and " + piece.merged + ")";
+  if (!piece.partner) return "cut " + std::to_string(piece.quantity);
   const std::string& other = names[*piece.partner];
   return piece.partner_match == PanelMatch::Mirror ? "cut 1 (pair with " + other + ": mirror image)"
                                                    : "cut 1 (same as " + other + ")";

@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
                "export-dxf"};
   std::string input, output, svg_path, png_path, style, author = "foldsketch", size = "base", material, category = "SELF";
   double allowance_mm = 10.0, png_scale = 2.0, mitre_limit = 2.0;
-  bool strict = false, as_json = false;
+  bool strict = false, as_json = false, merge_pairs = false;
   app.add_option("patterns", input, "garment OBJ or scene XML")->required();
   app.add_option("-o,--output", output, "DXF to write ('-' = standard output)")->required();
   app.add_option("--svg", svg_path, "also write a 1:1 SVG (mm) of the pieces");
@@ -101,6 +101,8 @@ int main(int argc, char** argv) {
   app.add_option("--mitre-limit", mitre_limit, "allowance corners are mitred up to this many allowances out, squared beyond")
       ->capture_default_str()->check(CLI::Range(1.0, 100.0));
   app.add_flag("--strict", strict, "DXF ENTITIES hold only the piece INSERTs (no style text)");
+  app.add_flag("--merge-pairs", merge_pairs,
+               "one piece for each pair of congruent panels: quantity 2, 'cut 2' (copies) or 'cut pair' (mirror images)");
   app.add_option("--style", style, "style name (default: the scene's name, or the garment file's)");
   app.add_option("--author", author, "author text")->capture_default_str();
   app.add_option("--size", size, "sample size text")->capture_default_str();
@@ -132,6 +134,7 @@ int main(int argc, char** argv) {
     } catch (const ArgumentError& e) {
       throw InputError(garment_path, 0, e.what());
     }
+    if (merge_pairs) layout.pieces = merge_congruent_pieces(layout.pieces);
     if (!style.empty()) text.style_name = style;
     if (!material.empty()) text.material = material;
     text.author = author;
@@ -179,6 +182,7 @@ int main(int argc, char** argv) {
         j.begin_object().key("panel").value(p.name).key("block").value(sheet.names[i]);
         j.key("cut_vertices").value(p.cut.outer.size()).key("cut_outs").value(p.cut.holes.size());
         j.key("notches").value(p.notches.size()).key("area_mm2").value(signed_area(p.sew.front()) * kMm * kMm);
+        j.key("quantity").value(p.quantity);
         j.key("instruction").value(cutting_instruction(layout.pieces, sheet.names, static_cast<int>(i)));
         j.end_object();
       }

@@ -217,4 +217,20 @@ CuttingLayout cutting_pieces(const Garment& g, const PieceParams& params) {
   return layout;
 }
 
+std::vector<CuttingPiece> merge_congruent_pieces(const std::vector<CuttingPiece>& pieces) {
+  std::vector<CuttingPiece> merged;
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    const CuttingPiece& piece = pieces[i];
+    if (piece.partner && *piece.partner < static_cast<int>(i)) continue;  // folded into its partner
+    CuttingPiece kept = piece;
+    if (piece.partner) {
+      kept.quantity = 2;
+      kept.merged = pieces[*piece.partner].name;
+    }
+    kept.partner.reset();
+    merged.push_back(std::move(kept));
+  }
+  return merged;
+}
+
 } // namespace foldsketch

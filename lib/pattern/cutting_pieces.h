@@ -32,6 +32,10 @@ struct CuttingPiece {
   std::vector<Vector2d> drill_holes;                   // punched (pleat ends)
   std::optional<int> partner;          // index of the piece cut from the same pattern
   PanelMatch partner_match = PanelMatch::Copy;
+  // Pieces cut from this pattern: 1, or 2 when merge_congruent_pieces() folded the partner in
+  // (then `merged` names the partner's panel and `partner_match` says copy or mirror image).
+  int quantity = 1;
+  std::string merged;
 };
 
 struct PieceParams {
@@ -59,5 +63,10 @@ struct CuttingLayout {
 // is a panel rotated in pattern space. Throws ArgumentError when a panel's outline cannot be
 // offset (see seam_allowance()).
 CuttingLayout cutting_pieces(const Garment& g, const PieceParams& params = {});
+
+// One piece per pair of congruent pieces, as a cutting room wants them: the lower-indexed piece
+// of each pair with quantity 2 ("cut 2" for copies, "cut pair" for mirror images), the other
+// dropped. Unpaired pieces are kept as they are. Order is kept.
+std::vector<CuttingPiece> merge_congruent_pieces(const std::vector<CuttingPiece>& pieces);
 
 } // namespace foldsketch

@@ -2,7 +2,7 @@
 """Independent checks of export-dxf's output, for the tests (run with Debian's /usr/bin/python3,
 which has python3-ezdxf). Exits 0 when every check passes, else prints each failure and exits 1.
 
-  check_cutting_patterns.py dxf DXF GARMENT_OBJ ALLOWANCE_MM [--strict]
+  check_cutting_patterns.py dxf DXF GARMENT_OBJ ALLOWANCE_MM [--strict] [--merged]
   check_cutting_patterns.py svg SVG GARMENT_OBJ ALLOWANCE_MM
   check_cutting_patterns.py seams REPORT_JSON TOLERANCE_MM MIN_SEAMS
 
@@ -222,7 +222,7 @@ def raw_tags(path):
     return [(int(lines[i].strip()), lines[i + 1].strip()) for i in range(0, len(lines) - 1, 2)]
 
 
-def check_dxf(path, obj, allowance, strict):
+def check_dxf(path, obj, allowance, strict, merged=False):
     import ezdxf
     panels = read_obj_panels(obj)
     tags = raw_tags(path)
@@ -253,7 +253,7 @@ def check_dxf(path, obj, allowance, strict):
         fail(f"block names not unique: {raw_blocks}")
     if any(" " in b or not b.isascii() for b in raw_blocks):
         fail(f"block names with spaces or non-ASCII: {raw_blocks}")
-    if len(raw_blocks) != len(panels):
+    if len(raw_blocks) != len(panels) and not (merged and 0 < len(raw_blocks) < len(panels)):
         fail(f"{len(raw_blocks)} blocks for {len(panels)} panels")
 
     doc = ezdxf.readfile(path)  # the strict reader: raises on a malformed file
@@ -284,7 +284,8 @@ def check_dxf(path, obj, allowance, strict):
     for panel, loops in panels.items():
         name = names_of[panel]
         if name not in doc.blocks:
-            fail(f"no block {name} for panel {panel}")
+            if not merged:
+                fail(f"no block {name} for panel {panel}")
             continue
         block = doc.blocks[name]
         cut = [e for e in block if e.dxftype() == "POLYLINE" and e.dxf.layer == "1"]
@@ -406,7 +407,7 @@ def check_seams(report, tolerance, min_seams):
 def main():
     kind = sys.argv[1]
     if kind == "dxf":
-        check_dxf(sys.argv[2], sys.argv[3], float(sys.argv[4]), "--strict" in sys.argv[5:])
+        check_dxf(sys.argv[2], sys.argv[3], float(sys.argv[4]), "--strict" in sys.argv[5:], "--merged" in sys.argv[5:])
     elif kind == "svg":
         check_svg(sys.argv[2], sys.argv[3], float(sys.argv[4]))
     elif kind == "seams":

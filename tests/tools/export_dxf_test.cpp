@@ -186,6 +186,22 @@ TEST(ExportDxf, UsageErrorsExitTwo) {
   EXPECT_EQ(test::run(test::tool_path("export-dxf") + " --help").status, 0);
 }
 
+TEST(ExportDxf, MergedPairsAreCutTwiceFromOnePiece) {
+  const std::string folder = test::temp_folder();
+  const std::string garment = test::source_path("samples/box-cover/garment.obj");
+  const auto r = test::run(test::tool_path("export-dxf") + " " + garment + " -o " + folder + "/p.dxf --merge-pairs");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string dxf = test::read_text(folder + "/p.dxf");
+  // Five panels: the top, and front/back and left/right cut from one pattern each.
+  int blocks = 0, twice = 0;
+  for (auto at = dxf.find("\nBLOCK\n"); at != std::string::npos; at = dxf.find("\nBLOCK\n", at + 1)) ++blocks;
+  for (auto at = dxf.find("Quantity: 2\n"); at != std::string::npos; at = dxf.find("Quantity: 2\n", at + 1)) ++twice;
+  EXPECT_EQ(blocks, 3);
+  EXPECT_EQ(twice, 2);
+  EXPECT_NE(dxf.find("Annotation: cut 2 (front and back)"), std::string::npos);
+  expect_check("dxf " + folder + "/p.dxf " + garment + " 10 --merged");
+}
+
 // The checker must fail on the defects it is there to catch; otherwise the tests above prove nothing.
 TEST(ExportDxf, CheckerCatchesDefects) {
   const std::string folder = test::temp_folder();
