@@ -29,7 +29,7 @@ public:
 
   // Energy [J] of drape x (#V by 3). gradient (size 3 * free_count) is filled when non-null,
   // hessian (fixed pattern, full symmetric storage) when non-null, with the membrane and the
-  // bending Hessians of the given kinds. Element loops run in parallel (OpenMP).
+  // bending Hessians of the given kinds. Element loops run in parallel (one share per thread).
   EnergyTerms evaluate(const MatrixX3d& x, VectorXd* gradient, SparseMatrix* hessian, HessianKind membrane_kind,
                        HessianKind bending_kind) const;
   EnergyTerms evaluate(const MatrixX3d& x, VectorXd* gradient, SparseMatrix* hessian, HessianKind kind) const {
@@ -65,6 +65,13 @@ private:
   std::vector<std::vector<Block>> triangle_blocks_, hinge_blocks_, stitch_blocks_;
   std::vector<Block> diagonal_blocks_;  // per free vertex
   VectorXd free_mass_;
+  // Body contact "only where it acts": per free vertex, the last point where its body distance
+  // was queried and that distance (NaN: none yet). Distance to a surface is 1-Lipschitz, so a
+  // vertex within (distance - thickness) of that point is out of contact, exactly, and needs no
+  // query. A cache of certificates, not of results: any (point, distance) pair stays true.
+  // Each evaluation writes only its own vertices' entries (each vertex is in one thread's share).
+  mutable std::vector<Eigen::Vector4d> contact_certificates_;
+  int thread_count_ = 1;  // threads per evaluation: the cores, fewer for small models
 };
 
 } // namespace foldsketch
