@@ -6,15 +6,19 @@ set output out
 set multiplot layout 1,2
 set logscale xy
 set grid
+# Keep points off the frame (log axes autoscale to the data).
+set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05
 set key top left
 set title 'Skirt drape: wall time against error (vs tight reference)'
 set xlabel 'mean vertex error [mm]'
 set ylabel 'median wall time [s]'
-plot csv using ($8 > 0 ? $8 : 1e-4):(strcol(2) eq 'accurate' ? $3 : 1/0) skip 1 with linespoints title 'accurate', \
-     csv using ($8 > 0 ? $8 : 1e-4):(strcol(2) eq 'fast' ? $3 : 1/0) skip 1 with linespoints title 'fast'
+# drape_bench writes the presets in alternating rows (accurate, fast), so `every 2` picks one
+# preset and the points of a preset join into one line (a 1/0 filter would break the line).
+plot csv using ($8 > 0 ? $8 : 1e-4):3 skip 1 every 2::0 with linespoints title 'accurate', \
+     csv using ($8 > 0 ? $8 : 1e-4):3 skip 1 every 2::1 with linespoints title 'fast'
 set title 'Skirt drape: wall time against size'
 set xlabel 'triangles'
 set ylabel 'median wall time [s]'
-plot csv using 1:(strcol(2) eq 'accurate' ? $3 : 1/0) skip 1 with linespoints title 'accurate', \
-     csv using 1:(strcol(2) eq 'fast' ? $3 : 1/0) skip 1 with linespoints title 'fast'
+plot csv using 1:3 skip 1 every 2::0 with linespoints title 'accurate', \
+     csv using 1:3 skip 1 every 2::1 with linespoints title 'fast'
 unset multiplot
