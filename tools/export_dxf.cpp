@@ -63,9 +63,7 @@ struct SeamRow {
 // Distance range of a piece's cut vertices from its sew line [m]: the allowance, checked.
 std::pair<double, double> allowance_range(const CuttingPiece& piece) {
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
-  std::vector<const Loop2*> cut{&piece.cut.outer};
-  for (const Loop2& h : piece.cut.holes) cut.push_back(&h);
-  for (const Loop2* loop : cut)
+  for (const Loop2* loop : piece.cut.loops())
     for (const Vector2d& p : *loop) {
       double d = std::numeric_limits<double>::infinity();
       for (const Loop2& sew : piece.sew) d = std::min(d, distance_to_loop(p, sew));

@@ -15,11 +15,6 @@ Loop2 loop_points(const MatrixX2d& P, const std::vector<int>& vertices) {
   return loop;
 }
 
-Vector2d outward_normal(const Vector2d& a, const Vector2d& b) {
-  const Vector2d t = (b - a).normalized();
-  return {t.y(), -t.x()};
-}
-
 // Smallest t > 0 at which p + t * dir meets one of the loops' edges; infinity if none.
 double ray_hit(const Vector2d& p, const Vector2d& dir, const std::vector<const Loop2*>& loops) {
   double best = std::numeric_limits<double>::infinity();
@@ -65,12 +60,10 @@ Vector2d area_centroid(const Loop2& loop) {
 }
 
 void set_grain_line(CuttingPiece& piece, double fraction) {
-  std::vector<const Loop2*> loops{&piece.cut.outer};
-  for (const Loop2& h : piece.cut.holes) loops.push_back(&h);
   const Vector2d c = area_centroid(piece.sew.front());
   // Nudge off vertices so the crossing count is clean.
   const double x = c.x() + 1e-9;
-  const std::vector<double> ys = vertical_crossings(x, loops);
+  const std::vector<double> ys = vertical_crossings(x, piece.cut.loops());
   // The inside interval that holds the centroid, or else the longest one.
   double lo = c.y(), hi = c.y();
   for (size_t i = 0; i + 1 < ys.size(); i += 2) {
@@ -90,8 +83,9 @@ void set_grain_line(CuttingPiece& piece, double fraction) {
   piece.grain_to = Vector2d(c.x(), mid + half);
 }
 
-// A notch at loop position k of piece p: along the outward normal of the edge `edge_from` ->
-// `edge_to` (or, with no edge, the mean of the normals of the edges at the vertex).
+// A notch at position k of the sew loop: along the outward normal of the loop's edge
+// `direction_edge` (-1: the mean of the normals of the two edges at the vertex), starting where
+// that line meets the cut line.
 void add_notch(CuttingPiece& piece, const Loop2& sew, int k, int direction_edge, const PieceParams& params) {
   const int n = static_cast<int>(sew.size());
   const Vector2d& p = sew[k];
@@ -104,11 +98,7 @@ void add_notch(CuttingPiece& piece, const Loop2& sew, int k, int direction_edge,
   if (!normal.allFinite()) return;
   const double d = params.allowance.allowance;
   double reach = 0.0;
-  if (d > 0.0) {
-    std::vector<const Loop2*> loops{&piece.cut.outer};
-    for (const Loop2& h : piece.cut.holes) loops.push_back(&h);
-    reach = std::min(ray_hit(p, normal, loops), params.allowance.mitre_limit * d);
-  }
+  if (d > 0.0) reach = std::min(ray_hit(p, normal, piece.cut.loops()), params.allowance.mitre_limit * d);
   const Vector2d at = p + reach * normal;
   const double depth = d > 0.0 ? std::min(params.notch_depth, reach) : params.notch_depth;
   piece.notches.push_back({at, -normal, depth});

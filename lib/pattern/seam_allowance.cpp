@@ -35,12 +35,6 @@ std::optional<Polygon> ccw_polygon(const std::vector<Vector2d>& points) {
   return polygon;
 }
 
-// Outward unit normal of the edge a -> b of a loop with the material on its left.
-Vector2d outward_normal(const Vector2d& a, const Vector2d& b) {
-  const Vector2d t = (b - a).normalized();
-  return {t.y(), -t.x()};
-}
-
 // The polygons whose union with the piece is its offset: a rectangle per edge and a join per
 // convex corner. Rectangle and join share their corner points bit for bit, so the union has no
 // slivers of gap between them.
@@ -135,6 +129,17 @@ void check_loop(const Loop2& loop, const char* what) {
     if (!p.allFinite()) throw ArgumentError(std::string("seam_allowance: the ") + what + " has a non-finite vertex");
 }
 } // namespace
+
+std::vector<const Loop2*> CutOutline::loops() const {
+  std::vector<const Loop2*> all{&outer};
+  for (const Loop2& h : holes) all.push_back(&h);
+  return all;
+}
+
+Vector2d outward_normal(const Vector2d& a, const Vector2d& b) {
+  const Vector2d t = (b - a).normalized();
+  return {t.y(), -t.x()};
+}
 
 double signed_area(const Loop2& loop) {
   double twice = 0.0;

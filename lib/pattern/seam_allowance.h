@@ -30,6 +30,9 @@ struct AllowanceParams {
 struct CutOutline {
   Loop2 outer;                // counter-clockwise
   std::vector<Loop2> holes;   // clockwise: internal cut-outs that survive the offset
+
+  // Every loop of the cut line, outer first.
+  std::vector<const Loop2*> loops() const;
 };
 
 // Cut outline of the region bounded by `outer` (counter-clockwise) minus `holes` (clockwise,
@@ -39,6 +42,9 @@ struct CutOutline {
 // Throws ArgumentError on non-finite input, an outer loop of fewer than 3 vertices or a negative
 // allowance.
 CutOutline seam_allowance(const Loop2& outer, const std::vector<Loop2>& holes, const AllowanceParams& params = {});
+
+// Outward unit normal of the edge a -> b of a loop with the material on its left.
+Vector2d outward_normal(const Vector2d& a, const Vector2d& b);
 
 // Signed area of a loop (positive when counter-clockwise) [m^2].
 double signed_area(const Loop2& loop);
