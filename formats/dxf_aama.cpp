@@ -55,6 +55,24 @@ public:
     group(0, type);
     group(8, layer);
   }
+  void begin_section(const char* name) {
+    group(0, "SECTION");
+    group(2, name);
+  }
+  void end_section() { group(0, "ENDSEC"); }
+  // A table of `count` entries, each opened by table_entry(type, name) with type the table's
+  // name; end_table() closes it.
+  void begin_table(const char* name, int count) {
+    group(0, "TABLE");
+    group(2, name);
+    group(70, count);
+  }
+  void table_entry(const char* type, const char* name) {
+    group(0, type);
+    group(2, name);
+    group(70, 0);  // no flags
+  }
+  void end_table() { group(0, "ENDTAB"); }
   const std::string& str() const { return out_; }
 
 private:
@@ -140,8 +158,7 @@ void piece_block(DxfText& dxf, const std::vector<CuttingPiece>& pieces, const st
 }
 
 void header(DxfText& dxf, const Eigen::AlignedBox2d& extent_mm) {
-  dxf.group(0, "SECTION");
-  dxf.group(2, "HEADER");
+  dxf.begin_section("HEADER");
   dxf.group(9, "$ACADVER");
   dxf.group(1, "AC1009");
   dxf.group(9, "$INSBASE");
@@ -152,38 +169,25 @@ void header(DxfText& dxf, const Eigen::AlignedBox2d& extent_mm) {
   dxf.point(extent_mm.max());
   dxf.group(9, "$LUNITS");
   dxf.group(70, 2);  // decimal
-  dxf.group(0, "ENDSEC");
+  dxf.end_section();
 
-  dxf.group(0, "SECTION");
-  dxf.group(2, "TABLES");
-  dxf.group(0, "TABLE");
-  dxf.group(2, "LTYPE");
-  dxf.group(70, 1);
-  dxf.group(0, "LTYPE");
-  dxf.group(2, "CONTINUOUS");
-  dxf.group(70, 0);
+  dxf.begin_section("TABLES");
+  dxf.begin_table("LTYPE", 1);
+  dxf.table_entry("LTYPE", "CONTINUOUS");
   dxf.group(3, "Solid line");
   dxf.group(72, 65);
   dxf.group(73, 0);
   dxf.group(40, "0.0");
-  dxf.group(0, "ENDTAB");
-  dxf.group(0, "TABLE");
-  dxf.group(2, "LAYER");
-  dxf.group(70, static_cast<int>(std::size(kLayers)));
+  dxf.end_table();
+  dxf.begin_table("LAYER", static_cast<int>(std::size(kLayers)));
   for (const char* layer : kLayers) {
-    dxf.group(0, "LAYER");
-    dxf.group(2, layer);
-    dxf.group(70, 0);
+    dxf.table_entry("LAYER", layer);
     dxf.group(62, 7);
     dxf.group(6, "CONTINUOUS");
   }
-  dxf.group(0, "ENDTAB");
-  dxf.group(0, "TABLE");
-  dxf.group(2, "STYLE");
-  dxf.group(70, 1);
-  dxf.group(0, "STYLE");
-  dxf.group(2, "STANDARD");
-  dxf.group(70, 0);
+  dxf.end_table();
+  dxf.begin_table("STYLE", 1);
+  dxf.table_entry("STYLE", "STANDARD");
   dxf.group(40, "0.0");
   dxf.group(41, "1.0");
   dxf.group(50, "0.0");
@@ -191,8 +195,8 @@ void header(DxfText& dxf, const Eigen::AlignedBox2d& extent_mm) {
   dxf.group(42, number(kTextHeight));
   dxf.group(3, "txt");
   dxf.group(4, "");
-  dxf.group(0, "ENDTAB");
-  dxf.group(0, "ENDSEC");
+  dxf.end_table();
+  dxf.end_section();
 }
 
 } // namespace
@@ -246,13 +250,11 @@ std::string aama_dxf(const std::vector<CuttingPiece>& pieces, const std::vector<
 
   DxfText dxf;
   header(dxf, extent);
-  dxf.group(0, "SECTION");
-  dxf.group(2, "BLOCKS");
+  dxf.begin_section("BLOCKS");
   for (size_t i = 0; i < pieces.size(); ++i) piece_block(dxf, pieces, names, static_cast<int>(i), t);
-  dxf.group(0, "ENDSEC");
+  dxf.end_section();
 
-  dxf.group(0, "SECTION");
-  dxf.group(2, "ENTITIES");
+  dxf.begin_section("ENTITIES");
   for (size_t i = 0; i < pieces.size(); ++i) {
     dxf.entity("INSERT", kBoundary);
     dxf.group(2, names[i]);
@@ -267,7 +269,7 @@ std::string aama_dxf(const std::vector<CuttingPiece>& pieces, const std::vector<
       at.y() -= kLineSpacing;
     }
   }
-  dxf.group(0, "ENDSEC");
+  dxf.end_section();
   dxf.group(0, "EOF");
   return dxf.str();
 }

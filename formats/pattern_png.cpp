@@ -49,11 +49,11 @@ void dashed_loop(Canvas& c, const PatternSheet& sheet, int i, const Loop2& loop)
   }
 }
 
-void text(Canvas& c, const Vector2d& at_mm, double height_mm, const std::string& s, int weight) {
+void text(Canvas& c, const SheetText& t) {
   // Hershey simplex: a font scale of 1 draws capitals about 22 px high; a font's capitals are
   // about 0.7 of its size, as the SVG's font-size.
-  cv::putText(c.image, ascii_text(s), c.px(at_mm), cv::FONT_HERSHEY_SIMPLEX, 0.7 * height_mm * c.scale / 22.0, kBlack,
-              std::max(1, weight), cv::LINE_AA);
+  cv::putText(c.image, t.text, c.px(t.at), cv::FONT_HERSHEY_SIMPLEX, 0.7 * t.height * c.scale / 22.0, kBlack,
+              c.thickness(t.bold ? 0.6 : 0.3), cv::LINE_AA);
 }
 
 } // namespace
@@ -69,8 +69,8 @@ std::vector<unsigned char> pattern_png(const PatternSheet& sheet, double px_per_
   for (size_t n = 0; n < pieces.size(); ++n) {
     const int i = static_cast<int>(n);
     const CuttingPiece& piece = pieces[n];
-    std::vector<std::vector<cv::Point>> cut{polygon(c, sheet, i, piece.cut.outer)};
-    for (const Loop2& h : piece.cut.holes) cut.push_back(polygon(c, sheet, i, h));
+    std::vector<std::vector<cv::Point>> cut;
+    for (const Loop2* loop : piece.cut.loops()) cut.push_back(polygon(c, sheet, i, *loop));
     cv::fillPoly(c.image, cut, kCutFill, cv::LINE_AA);
     cv::polylines(c.image, cut, true, kBlack, c.thickness(0.5), cv::LINE_AA);
     if (sheet.text.seam_allowance > 0.0)
@@ -86,18 +86,12 @@ std::vector<unsigned char> pattern_png(const PatternSheet& sheet, double px_per_
       for (size_t k = 0; k + 1 < line.size(); ++k)
         cv::line(c.image, c.px(sheet.page(i, line[k])), c.px(sheet.page(i, line[k + 1])), kGrey, c.thickness(0.3), cv::LINE_AA);
     for (const Vector2d& h : piece.drill_holes) cv::circle(c.image, c.px(sheet.page(i, h)), c.thickness(1.0), kBlack, cv::FILLED);
-    Vector2d at = sheet.page(i, piece.grain_to) + Vector2d(3.0, 7.0);
-    const std::vector<std::string> title = sheet.title(i);
-    for (size_t t = 0; t < title.size(); ++t) {
-      text(c, at, t == 0 ? 7.0 : 4.5, title[t], t == 0 ? c.thickness(0.6) : c.thickness(0.3));
-      at.y() += (t == 0 ? 7.0 : 4.5) * 1.3;
-    }
+    for (const SheetText& line : sheet.title_block(i)) text(c, line);
   }
-  const Vector2d top_left = sheet.page(Vector2d(sheet.scale_box.min().x(), sheet.scale_box.max().y()));
-  const Vector2d bottom_right = sheet.page(Vector2d(sheet.scale_box.max().x(), sheet.scale_box.min().y()));
+  const Vector2d top_left = sheet.scale_box_corner();
+  const Vector2d bottom_right = top_left + Vector2d(PatternSheet::kScaleBoxWidthMm, PatternSheet::kScaleBoxHeightMm);
   cv::rectangle(c.image, c.px(top_left), c.px(bottom_right), kBlack, c.thickness(0.5), cv::LINE_AA);
-  text(c, top_left + Vector2d(4.0, 9.0), 4.5, "Scale check: this box is 100 x 50 mm", c.thickness(0.3));
-  text(c, top_left + Vector2d(4.0, 16.2), 4.5, "Style: " + sheet.text.style_name, c.thickness(0.3));
+  for (const SheetText& line : sheet.scale_box_text()) text(c, line);
   std::vector<unsigned char> png;
   if (!cv::imencode(".png", c.image, png)) throw ArgumentError("OpenCV could not encode the PNG preview");
   return png;

@@ -13,6 +13,14 @@
 
 namespace foldsketch {
 
+// One line of text on the sheet: baseline start in page millimetres, font size [mm].
+struct SheetText {
+  Vector2d at = Vector2d::Zero();
+  double height = 0.0;
+  bool bold = false;
+  std::string text;  // ASCII
+};
+
 struct PatternSheet {
   const std::vector<CuttingPiece>* pieces = nullptr;
   std::vector<std::string> names;      // piece_block_names()
@@ -30,8 +38,12 @@ struct PatternSheet {
   // Page position [mm, y down] of a point of piece i's pattern [m], or of a sheet point.
   Vector2d page(int i, const Vector2d& pattern) const;
   Vector2d page(const Vector2d& sheet) const;
-  // Title lines of piece i: name, cutting instruction, material.
-  std::vector<std::string> title(int i) const;
+  // Top-left corner of the scale box [page mm].
+  Vector2d scale_box_corner() const;
+  // Piece i's title block beside the top of its grain line (name, cutting instruction,
+  // material), and the lines written in the scale box: the same in the SVG and the PNG.
+  std::vector<SheetText> title_block(int i) const;
+  std::vector<SheetText> scale_box_text() const;
 };
 
 PatternSheet pattern_sheet(const std::vector<CuttingPiece>& pieces, const PatternText& text);
