@@ -99,7 +99,6 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   VectorXd velocity = VectorXd::Zero(3 * n);
   double h = settings.time_step;
   double damping = 1.0 / (h * h);
-  int reused = 0;
   bool factor_current = false;
 
   // The incremental potential Phi(y) = E(y) + |y - x_hat|^2_M / (2 h^2), x_hat = x_n + h v_n
@@ -138,25 +137,18 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
     if (progress) progress(stats);
   };
 
-  // One damped Newton iteration on Phi from x, given Phi's gradient g there and, when
-  // `have_hessian`, E's Hessian in A. Returns false when no step lowered Phi.
-  double applied_damping = 0.0;  // damping already added to A since its last assembly
+  // One damped Newton iteration on Phi from x, given Phi's gradient g there and E's Hessian
+  // in A (just assembled). Returns false when no step lowered Phi.
+  double applied_damping = 0.0;  // damping already added to A since its assembly
   // phi: Phi(x), known to the caller from the evaluation that gave g.
-  const auto newton_iteration = [&](VectorXd& g, bool have_hessian, double phi) {
-    if (have_hessian) applied_damping = 0.0;
+  const auto newton_iteration = [&](VectorXd& g, double phi) {
+    applied_damping = 0.0;
     for (int attempt = 0; attempt < 60; ++attempt) {
-      if (!have_hessian && !factor_current) {
-        VectorXd ignored;
-        evaluate(x, &ignored, &A);
-        applied_damping = 0.0;
-        have_hessian = true;
-      }
       if (!factor_current) {
         const double mass_term = damping + (dynamic ? settings.drag / h : 0.0);
         energy.add_mass(A, mass_term - applied_damping);
         applied_damping = mass_term;
         factor_current = cholesky.factorize(A);
-        reused = 0;
         if (!factor_current) {  // not positive definite: more damping on the same Hessian
           damping *= 10.0;
           if (damping > kMaxDamping) return false;
@@ -164,10 +156,9 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         }
       }
       ++stats.newton_iterations;
-      ++reused;
       VectorXd dx = cholesky.solve(-g);
       double slope = g.dot(dx);
-      if (!(slope < 0.0)) {  // a stale factorisation that no longer descends: refresh it
+      if (!(slope < 0.0)) {  // no descent (roundoff in a nearly singular factor): refactorise
         factor_current = false;
         continue;
       }
@@ -201,13 +192,10 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         }
       }
       stats.seconds_line_search += since(t0);
-      if (alpha < kMinStep) {  // no decrease along this direction
-        const bool stale = fast && reused > 1;
+      if (alpha < kMinStep) {  // no decrease along this direction: more damping
         factor_current = false;
-        if (!stale) {
-          damping *= 10.0;
-          if (damping > kMaxDamping) return false;
-        }
+        damping *= 10.0;
+        if (damping > kMaxDamping) return false;
         continue;
       }
       x = std::move(trial);
@@ -216,11 +204,9 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
       stats.damping = damping;
       if (!dynamic) {
         stats.kinetic_energy = 0.5 * damping * alpha * alpha * dx.dot(mass.cwiseProduct(dx));
-        // Grow the quasi-static step after a full Newton step, shrink it after a cut one. A
-        // kept factorisation holds the old damping, which only makes its steps shorter.
+        // Grow the quasi-static step after a full Newton step, shrink it after a cut one.
         damping = alpha == 1.0 ? std::max(kMinDamping, damping / settings.damping_decrease)
                                : std::min(kMaxDamping, damping * settings.damping_increase);
-        if (!fast) factor_current = false;
       }
       return true;
     }
@@ -228,11 +214,10 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   };
 
   for (int iteration = 0;; ++iteration) {
-    // E's gradient (and, when a factorisation is due, its Hessian) at the current drape.
-    const bool refresh = !fast || !factor_current || reused >= settings.reuse_limit || dynamic;
+    // E's gradient and Hessian at the current drape; every iteration factorises afresh.
     VectorXd g;
-    stats.energy = evaluate(x, &g, refresh ? &A : nullptr);
-    if (refresh) factor_current = false;
+    stats.energy = evaluate(x, &g, &A);
+    factor_current = false;
     stats.residual = n > 0 ? g.norm() / scale : 0.0;
     if (dynamic) stats.kinetic_energy = 0.5 * velocity.dot(mass.cwiseProduct(velocity));
     if (!std::isfinite(stats.residual)) {
@@ -256,7 +241,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
     x_step = x;
     if (!dynamic) {
       // At the start of a quasi-static step x = x_n, so Phi(x) = E(x), evaluated just above.
-      if (!newton_iteration(g, refresh, stats.energy.total())) {
+      if (!newton_iteration(g, stats.energy.total())) {
         stats.message = "stopped: no step lowers the energy (damping exceeded its bound); the drape is left where it was";
         break;
       }
@@ -273,7 +258,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
           phi += inertia(x, &gphi);
           if (gphi.norm() <= 0.1 * tolerance * scale) { settled = true; break; }
         }
-        if (!newton_iteration(gphi, true, phi)) break;
+        if (!newton_iteration(gphi, phi)) break;
       }
       if (!settled) {
         VectorXd gphi_end;
