@@ -115,8 +115,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "\rdrape-free: iteration %d, residual %.2e, %.1f s   ", s.newton_iterations, s.residual, s.seconds_total);
     });
     if (terminal && !trace) std::fprintf(stderr, "\n");
-    const double effective_tolerance =
-        settings.tolerance * (settings.preset == SolverPreset::Fast ? settings.fast_tolerance_factor : 1.0);
+    const double effective_tolerance = stopping_tolerance(settings);
     const bool write = result.stats.converged || write_unconverged;
     if (write) {
       garment.V = result.V;

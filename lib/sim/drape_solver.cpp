@@ -69,6 +69,10 @@ double max_penetration(const ClothModel& model, const MatrixX3d& x) {
   return deepest;
 }
 
+double stopping_tolerance(const DrapeSettings& settings) {
+  return settings.tolerance * (settings.preset == SolverPreset::Fast ? settings.fast_tolerance_factor : 1.0);
+}
+
 DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const DrapeSettings& settings,
                         const DrapeProgress& progress) {
   const auto start = Clock::now();
@@ -82,10 +86,9 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   const ClothEnergy energy(model);
   const int n = energy.free_count();
   const VectorXd& mass = energy.free_mass();
-  const bool fast = settings.preset == SolverPreset::Fast;
   const HessianKind membrane_kind = settings.membrane_hessian;
   const HessianKind bending_kind = settings.bending_hessian;
-  const double tolerance = settings.tolerance * (fast ? settings.fast_tolerance_factor : 1.0);
+  const double tolerance = stopping_tolerance(settings);
   const bool dynamic = settings.mode == SimulationMode::Dynamic;
 
   // Residual scale: the weight of the free cloth; without gravity, a membrane force (stretch

@@ -60,6 +60,10 @@ struct DrapeSettings {
 
 DrapeSettings drape_settings(const SimulatorSettings& scene);
 
+// The relative force residual at which the solver stops: the tolerance, times
+// fast_tolerance_factor for the Fast preset.
+double stopping_tolerance(const DrapeSettings& settings);
+
 struct DrapeStats {
   bool converged = false;
   std::string message;              // why it stopped, in words
