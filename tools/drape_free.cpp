@@ -36,7 +36,8 @@ std::string json(const DrapeStats& s, double tolerance, const std::string& outpu
   j.key("output").value(written ? output : "").key("steps").value(s.steps).key("newton_iterations").value(s.newton_iterations);
   j.key("factorizations").value(s.factorizations).key("residual").value(s.residual).key("tolerance").value(tolerance);
   j.key("energy_J").begin_object().key("membrane").value(s.energy.membrane).key("bending").value(s.energy.bending);
-  j.key("gravity").value(s.energy.gravity).key("stitches").value(s.energy.stitches).key("contact").value(s.energy.contact).end_object();
+  j.key("gravity").value(s.energy.gravity).key("stitches").value(s.energy.stitches).key("contact").value(s.energy.contact);
+  j.key("self_contact").value(s.energy.self_contact).end_object();
   j.key("max_strain").value(s.max_strain).key("max_penetration_m").value(s.max_penetration);
   j.key("time_s").begin_object().key("assembly").value(s.seconds_assembly).key("factorization").value(s.seconds_factorization);
   j.key("solve").value(s.seconds_solve).key("line_search").value(s.seconds_line_search).key("total").value(s.seconds_total).end_object();

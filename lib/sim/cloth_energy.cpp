@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <functional>
 #include <limits>
+#include <stdexcept>
 
 #include <exception>
 #include <thread>
 
 #include "core/error.h"
 #include "sim/bending.h"
+#include "sim/self_contact.h"
 
 namespace foldsketch {
 namespace {
@@ -16,6 +18,9 @@ namespace {
 // Elements per thread below which a second thread costs more than it saves (our measure: a
 // thread start is tens of microseconds, an element a few hundred nanoseconds).
 constexpr size_t kElementsPerThread = 2000;
+// Self-contact pairs enter the Hessian pattern once closer than this many contact thicknesses,
+// a little ahead of contact, so the pattern (and the analysis) changes less often.
+constexpr double kPatternReach = 2.0;
 
 // Runs work(0), ..., work(threads - 1), work(0) on the calling thread, the others on fresh
 // threads that end when their share does. Plain threads instead of OpenMP: idle OpenMP workers
@@ -67,14 +72,25 @@ ClothEnergy::ClothEnergy(const ClothModel& model) : model_(model) {
   for (const auto& t : model.triangles) couple(t.data(), 3);
   for (const Hinge& h : model.hinges) couple(h.v.data(), 4);
   for (const StitchSpring& s : model.stitches) couple(s.v.data(), 4);
-  pattern_.resize(3 * n, 3 * n);
-  std::vector<int> outer(static_cast<size_t>(3 * n + 1), 0);
-  for (int b = 0; b < n; ++b) {
-    auto& rows = neighbours_[b];
+  for (auto& rows : neighbours_) {
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
-    for (int c = 0; c < 3; ++c) outer[3 * b + c + 1] = outer[3 * b + c] + 3 * static_cast<int>(rows.size());
   }
+  build_pattern();
+  free_mass_.resize(3 * n);
+  for (int v = 0; v < n; ++v) free_mass_.segment<3>(3 * v).setConstant(model.mass(free_vertices_[v]));
+  const size_t elements = model.triangles.size() + model.hinges.size() + static_cast<size_t>(n);
+  const size_t hardware = std::max(1u, std::thread::hardware_concurrency());
+  thread_count_ = static_cast<int>(std::clamp<size_t>(elements / kElementsPerThread, 1, hardware));
+  contact_certificates_.assign(static_cast<size_t>(n), Eigen::Vector4d::Constant(std::numeric_limits<double>::quiet_NaN()));
+}
+
+void ClothEnergy::build_pattern() {
+  const int n = free_count();
+  pattern_ = SparseMatrix(3 * n, 3 * n);
+  std::vector<int> outer(static_cast<size_t>(3 * n + 1), 0);
+  for (int b = 0; b < n; ++b)
+    for (int c = 0; c < 3; ++c) outer[3 * b + c + 1] = outer[3 * b + c] + 3 * static_cast<int>(neighbours_[b].size());
   pattern_.resizeNonZeros(outer.back());
   std::copy(outer.begin(), outer.end(), pattern_.outerIndexPtr());
   for (int b = 0; b < n; ++b)
@@ -84,24 +100,47 @@ ClothEnergy::ClothEnergy(const ClothModel& model) : model_(model) {
         for (int r = 0; r < 3; ++r) pattern_.innerIndexPtr()[at++] = 3 * a + r;
     }
   std::fill(pattern_.valuePtr(), pattern_.valuePtr() + pattern_.nonZeros(), 0.0);
-
-  for (const auto& t : model.triangles) triangle_blocks_.push_back(blocks_for(t.data(), 3));
-  for (const Hinge& h : model.hinges) hinge_blocks_.push_back(blocks_for(h.v.data(), 4));
-  for (const StitchSpring& s : model.stitches) stitch_blocks_.push_back(blocks_for(s.v.data(), 4));
+  triangle_blocks_.clear();
+  hinge_blocks_.clear();
+  stitch_blocks_.clear();
+  diagonal_blocks_.clear();
+  for (const auto& t : model_.triangles) triangle_blocks_.push_back(blocks_for(t.data(), 3));
+  for (const Hinge& h : model_.hinges) hinge_blocks_.push_back(blocks_for(h.v.data(), 4));
+  for (const StitchSpring& s : model_.stitches) stitch_blocks_.push_back(blocks_for(s.v.data(), 4));
   for (int v = 0; v < n; ++v) diagonal_blocks_.push_back(block(v, v));
-  free_mass_.resize(3 * n);
-  for (int v = 0; v < n; ++v) free_mass_.segment<3>(3 * v).setConstant(model.mass(free_vertices_[v]));
-  const size_t elements = model.triangles.size() + model.hinges.size() + static_cast<size_t>(n);
-  const size_t hardware = std::max(1u, std::thread::hardware_concurrency());
-  thread_count_ = static_cast<int>(std::clamp<size_t>(elements / kElementsPerThread, 1, hardware));
-  contact_certificates_.assign(static_cast<size_t>(n), Eigen::Vector4d::Constant(std::numeric_limits<double>::quiet_NaN()));
+}
+
+bool ClothEnergy::prepare(const MatrixX3d& x) {
+  if (!model_.self_contact) return false;
+  const SelfContactModel& sc = *model_.self_contact;
+  bool grew = false;
+  const auto couple = [&](int a, int b) {  // free vertex indices
+    auto& rows = neighbours_[b];
+    const auto at = std::lower_bound(rows.begin(), rows.end(), a);
+    if (at != rows.end() && *at == a) return;
+    rows.insert(at, a);
+    grew = true;
+  };
+  for (const auto& [v, t] : self_contact_pairs(sc, x, kPatternReach * sc.thickness)) {
+    const int a = free_index_[v];
+    if (a < 0) continue;
+    for (int c : sc.triangles[static_cast<size_t>(t)])
+      if (const int b = free_index_[c]; b >= 0) {
+        couple(a, b);
+        couple(b, a);
+      }
+  }
+  if (grew) build_pattern();
+  return grew;
 }
 
 // Block (a, b) entry (r, c) lives at base + c * stride + r: every column of block column b
 // holds the same block rows, three entries each.
 ClothEnergy::Block ClothEnergy::block(int a, int b) const {
   const auto& rows = neighbours_[b];
-  const int rank = static_cast<int>(std::lower_bound(rows.begin(), rows.end(), a) - rows.begin());
+  const auto at = std::lower_bound(rows.begin(), rows.end(), a);
+  if (at == rows.end() || *at != a) throw std::logic_error("ClothEnergy: a Hessian block outside the pattern (prepare() was not called)");
+  const int rank = static_cast<int>(at - rows.begin());
   return {pattern_.outerIndexPtr()[3 * b] + 3 * rank, 3 * static_cast<int>(rows.size())};
 }
 
@@ -141,6 +180,8 @@ EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, Sparse
   std::vector<std::vector<double>> thread_values(static_cast<size_t>(threads),
                                                  std::vector<double>(static_cast<size_t>(value_count), 0.0));
   std::vector<EnergyTerms> thread_terms(static_cast<size_t>(threads));
+  const SelfContactModel* sc = model_.self_contact ? &*model_.self_contact : nullptr;
+  const std::vector<std::array<int, 2>> self_pairs = sc ? self_contact_active_pairs(*sc, x) : std::vector<std::array<int, 2>>{};
   const auto work = [&](int me_int) {
     const auto me = static_cast<size_t>(me_int);
     VectorXd& grad = thread_gradients[me];
@@ -190,6 +231,16 @@ EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, Sparse
         scatter<4>(stitch_blocks_[static_cast<size_t>(s)], H, values);
       }
     }
+    for (auto [i, end] = share(self_pairs.size()); i < end; ++i) {
+      const auto [v, t] = self_pairs[static_cast<size_t>(i)];
+      const auto& tri = sc->triangles[static_cast<size_t>(t)];
+      const std::array<int, 4> vs{v, tri[0], tri[1], tri[2]};
+      const Element12 e = point_triangle_penalty(x.row(v), x.row(tri[0]), x.row(tri[1]), x.row(tri[2]), sc->thickness,
+                                                 sc->stiffness * model_.contact_area(v), want_hessian);
+      mine.self_contact += e.energy;
+      add_gradient(vs.data(), 4, e.gradient);
+      if (want_hessian) scatter<4>(blocks_for(vs.data(), 4), e.hessian, values);
+    }
     // Gravity and contact act per vertex; pinned vertices do not move, so only free ones count.
     for (auto [a, end] = share(static_cast<size_t>(n)); a < end; ++a) {
       const int v = free_vertices_[a];
@@ -225,6 +276,7 @@ EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, Sparse
     terms.gravity += t.gravity;
     terms.stitches += t.stitches;
     terms.contact += t.contact;
+    terms.self_contact += t.self_contact;
   }
   if (want_gradient) {
     gradient->setZero(3 * n);

@@ -1,6 +1,8 @@
 // The total potential of a cloth model (membrane + bending + gravity + stitches + body
-// contact), its gradient and its Hessian over the free (unpinned) degrees of freedom, assembled
-// into one fixed sparsity pattern so the symbolic factorisation is done once.
+// contact + self-contact), its gradient and its Hessian over the free (unpinned) degrees of
+// freedom, assembled into one sparsity pattern so the symbolic factorisation is reused. The
+// pattern is fixed unless the model has self-contact: then it grows (never shrinks) to take in
+// the vertex-triangle pairs that come into contact, and each growth needs a new analysis.
 #pragma once
 
 #include <vector>
@@ -14,8 +16,8 @@ namespace foldsketch {
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
 struct EnergyTerms {
-  double membrane = 0, bending = 0, gravity = 0, stitches = 0, contact = 0;
-  double total() const { return membrane + bending + gravity + stitches + contact; }
+  double membrane = 0, bending = 0, gravity = 0, stitches = 0, contact = 0, self_contact = 0;
+  double total() const { return membrane + bending + gravity + stitches + contact + self_contact; }
 };
 
 class ClothEnergy {
@@ -39,6 +41,12 @@ public:
   // A zero matrix with the pattern every Hessian uses.
   const SparseMatrix& pattern() const { return pattern_; }
 
+  // Makes the pattern hold every self-contact pair within reach of contact at drape x; call it
+  // before evaluating a Hessian at x. Returns true when the pattern grew (Hessians assembled
+  // before are then stale, and a factorisation needs a new analysis). Without self-contact it
+  // does nothing.
+  bool prepare(const MatrixX3d& x);
+
   // Lumped masses per free DOF (3 * free_count) [kg].
   const VectorXd& free_mass() const { return free_mass_; }
 
@@ -54,6 +62,7 @@ private:
     int stride = 0;
   };
   Block block(int a, int b) const;  // free vertex indices
+  void build_pattern();             // pattern_ and the element blocks from neighbours_
   std::vector<Block> blocks_for(const int* vertices, int count) const;
   template <int N>
   void scatter(const std::vector<Block>& blocks, const Eigen::Matrix<double, 3 * N, 3 * N>& H, double* values) const;

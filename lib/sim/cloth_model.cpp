@@ -25,11 +25,46 @@ std::vector<int> pinned_vertices(const Scene& scene, const MatrixX3d& V) {
   return out;
 }
 
+namespace {
+
+// Who takes part in self-contact, and which pairs are never pushed apart: a vertex and the
+// triangles around it, and across a seam the triangles around the vertices stitched to it.
+SelfContactModel self_contact_model(const ClothModel& m, const ClothParams& params) {
+  SelfContactModel sc;
+  sc.thickness = params.self_contact_thickness;
+  sc.stiffness = params.self_contact_stiffness;
+  std::vector<char> taking_part(static_cast<size_t>(m.vertex_count), params.self_contact_vertices.empty() ? 1 : 0);
+  for (int v : params.self_contact_vertices) {
+    if (v < 0 || v >= m.vertex_count) throw ArgumentError("cloth_model: self-contact vertex " + std::to_string(v) + " does not exist");
+    taking_part[static_cast<size_t>(v)] = 1;
+  }
+  for (int v = 0; v < m.vertex_count; ++v)
+    if (taking_part[static_cast<size_t>(v)]) sc.vertices.push_back(v);
+  for (const auto& t : m.triangles) {
+    if (!taking_part[static_cast<size_t>(t[0])] || !taking_part[static_cast<size_t>(t[1])] || !taking_part[static_cast<size_t>(t[2])]) continue;
+    sc.triangles.push_back(t);
+    for (int k = 0; k < 3; ++k) sc.edges.push_back({std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])});
+  }
+  std::sort(sc.edges.begin(), sc.edges.end());
+  sc.edges.erase(std::unique(sc.edges.begin(), sc.edges.end()), sc.edges.end());
+  sc.near.assign(static_cast<size_t>(m.vertex_count), {});
+  for (int v = 0; v < m.vertex_count; ++v) sc.near[static_cast<size_t>(v)].push_back(v);
+  for (const StitchSpring& s : m.stitches)
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) sc.near[static_cast<size_t>(s.v[i])].push_back(s.v[j]);
+  for (auto& near : sc.near) {
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+  }
+  return sc;
+}
+
+} // namespace
+
 ClothModel cloth_model(const Garment& g, const Scene& scene, const TriangleMesh* body, const std::vector<int>& pinned,
                        const ClothParams& params) {
   if (const std::string error = garment_structure_error(g); !error.empty()) throw ArgumentError("cloth_model: " + error);
   // Said plainly rather than silently simulated without: these terms are not built yet.
-  if (scene.physics.self_contact) throw ArgumentError("the scene asks for self-contact, which the engine does not model yet");
   if (scene.physics.friction) throw ArgumentError("the scene asks for friction, which the engine does not model yet");
   ClothModel m;
   m.vertex_count = static_cast<int>(g.V.rows());
@@ -84,6 +119,7 @@ ClothModel cloth_model(const Garment& g, const Scene& scene, const TriangleMesh*
     m.contact_thickness = scene.body ? scene.body->thickness : 0.0;
     m.contact_stiffness = params.contact_stiffness;
   }
+  if (scene.physics.self_contact) m.self_contact = self_contact_model(m, params);
   return m;
 }
 

@@ -13,6 +13,7 @@
 #include "sim/body_distance.h"
 #include "sim/membrane.h"
 #include "sim/scene.h"
+#include "sim/self_contact.h"
 
 namespace foldsketch {
 
@@ -30,6 +31,14 @@ struct ClothParams {
   // in the Cusick test (1 -> 0.01: silk 0.41 -> 0.25, cotton 0.28 -> 0.21, leather 0.88 -> 0.79
   // on an 8 mm mesh) but did not put silk below cotton (tests/lib/sim/physics_test.cpp).
   double compression_fraction = 1.0;
+  // Cloth-cloth contact, when the scene asks for it. Thickness [m]: the distance a vertex is
+  // held from another layer, about three thicknesses of cotton (Penava et al. 2014: 0.318 mm),
+  // so that layers also stay apart between the vertices of 5-10 mm meshes; our choice.
+  // Stiffness [N/m^3]: the body contact's, for the same reason (a layer of cotton sinks 1.5 um).
+  double self_contact_thickness = 0.001;
+  double self_contact_stiffness = 1e6;
+  // Drape vertices that take part ("near the pleats"); empty: all of them.
+  std::vector<int> self_contact_vertices;
 };
 
 struct Hinge {
@@ -55,6 +64,7 @@ struct ClothModel {
   Vector3d gravity = Vector3d::Zero();           // [m/s^2]
   std::vector<Pin> pins;                         // held exactly (their DOFs are eliminated)
   std::optional<BodyDistance> body;              // only when the scene asks for body contact
+  std::optional<SelfContactModel> self_contact;  // only when the scene asks for self-contact
   double contact_thickness = 0;                  // [m]
   double contact_stiffness = 0;                  // [N/m^3]
   VectorXd contact_area;                         // per vertex rest area share [m^2]

@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "core/error.h"
+#include "sim/self_contact.h"
 #include "sim/sparse_cholesky.h"
 
 namespace foldsketch {
@@ -31,6 +32,10 @@ constexpr double kRoundoff = 1e-12;
 // then far below one step's inertial forces, and the drag and later steps absorb it. Otherwise
 // the step is halved.
 constexpr double kStepAcceptance = 1e-3;
+// Self-contact: one step may close at most this fraction of any cloth-cloth gap, so no layer
+// passes through another between two states (our choice: nearer 1, contact is approached in
+// fewer, riskier steps).
+constexpr double kSelfContactClosing = 0.9;
 
 MatrixX3d moved(const MatrixX3d& x, const VectorXd& dx, const std::vector<int>& free_vertices, double alpha) {
   MatrixX3d y = x;
@@ -83,7 +88,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   MatrixX3d x = initial;
   for (const Pin& p : model.pins) x.row(p.vertex) = p.position.transpose();
 
-  const ClothEnergy energy(model);
+  ClothEnergy energy(model);
   const int n = energy.free_count();
   const VectorXd& mass = energy.free_mass();
   const HessianKind membrane_kind = settings.membrane_hessian;
@@ -127,6 +132,13 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
     const EnergyTerms e = energy.evaluate(y, grad, hess, membrane_kind, bending_kind);
     stats.seconds_assembly += since(t0);
     return e;
+  };
+  // E's gradient and Hessian at y, with the Hessian pattern grown for self-contact first (and
+  // the factorisation's analysis redone when it grew).
+  const auto assemble = [&](const MatrixX3d& y, VectorXd* grad) {
+    if (energy.prepare(y)) cholesky.analyze(energy.pattern());
+    factor_current = false;
+    return evaluate(y, grad, &A);
   };
   const auto phi_only = [&](const MatrixX3d& y) {
     const double value = evaluate(y, nullptr, nullptr).total() + inertia(y, nullptr);
@@ -172,8 +184,15 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         slope *= settings.max_displacement / largest;
         largest = settings.max_displacement;
       }
+      // The longest step that no cloth layer passes through another on (1 without self-contact).
+      double longest = 1.0;
+      if (model.self_contact) {
+        MatrixX3d step = MatrixX3d::Zero(x.rows(), 3);
+        for (int a = 0; a < n; ++a) step.row(energy.free_vertices()[a]) = dx.segment<3>(3 * a).transpose();
+        longest = self_contact_step_bound(*model.self_contact, x, step, 1.0 - kSelfContactClosing);
+      }
       const auto t0 = Clock::now();
-      double alpha = 1.0;
+      double alpha = longest;
       MatrixX3d trial = moved(x, dx, energy.free_vertices(), alpha);
       while (phi_only(trial) > phi + kArmijo * alpha * slope && alpha >= kMinStep) {
         alpha *= 0.5;
@@ -182,14 +201,14 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
       if (alpha < kMinStep) {  // in the roundoff regime, judge the full step by its forces
         const EnergyTerms& e = stats.energy;
         const double magnitude = std::abs(e.membrane) + std::abs(e.bending) + std::abs(e.gravity) + std::abs(e.stitches) +
-                                 std::abs(e.contact) + std::abs(phi);
-        MatrixX3d full = moved(x, dx, energy.free_vertices(), 1.0);
+                                 std::abs(e.contact) + std::abs(e.self_contact) + std::abs(phi);
+        MatrixX3d full = moved(x, dx, energy.free_vertices(), longest);
         if (phi_only(full) <= phi + kRoundoff * magnitude) {
           VectorXd g_full;
           evaluate(full, &g_full, nullptr);
           inertia(full, &g_full);
           if (g_full.norm() < g.norm()) {
-            alpha = 1.0;
+            alpha = longest;
             trial = std::move(full);
           }
         }
@@ -219,8 +238,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   for (int iteration = 0;; ++iteration) {
     // E's gradient and Hessian at the current drape; every iteration factorises afresh.
     VectorXd g;
-    stats.energy = evaluate(x, &g, &A);
-    factor_current = false;
+    stats.energy = assemble(x, &g);
     stats.residual = n > 0 ? g.norm() / scale : 0.0;
     if (dynamic) stats.kinetic_energy = 0.5 * velocity.dot(mass.cwiseProduct(velocity));
     if (!std::isfinite(stats.residual)) {
@@ -256,8 +274,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
       for (int k = 0; k < 30 && !settled; ++k) {
         if (k > 0) {
           gphi.setZero();
-          phi = evaluate(x, &gphi, &A).total();
-          factor_current = false;
+          phi = assemble(x, &gphi).total();
           phi += inertia(x, &gphi);
           if (gphi.norm() <= 0.1 * tolerance * scale) { settled = true; break; }
         }

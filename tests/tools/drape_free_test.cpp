@@ -58,11 +58,30 @@ TEST(DrapeFree, BadInputIsLocatedAndWritesNothing) {
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err.rfind("drape-free: " + folder + "/bad.xml:3: unknown material preset 'tweed'", 0), 0u) << r.err;
   EXPECT_FALSE(std::filesystem::exists(folder + "/out.obj"));
-  test::write_text(folder + "/self.xml", "<scene>\n<garment file=\"garment.obj\"/>\n<material preset=\"silk\"/>\n"
-                                         "<physics body-contact=\"false\" self-contact=\"true\"/>\n</scene>\n");
-  const auto refused = test::run(test::tool_path("drape-free") + " " + folder + "/self.xml -o " + folder + "/out.obj");
+  std::string with_friction = test::read_text(folder + "/scene.xml");
+  const size_t at = with_friction.find("friction=\"false\"");
+  ASSERT_NE(at, std::string::npos) << with_friction;
+  with_friction.replace(at, std::string("friction=\"false\"").size(), "friction=\"true\"");
+  test::write_text(folder + "/friction.xml", with_friction);
+  const auto refused = test::run(test::tool_path("drape-free") + " " + folder + "/friction.xml -o " + folder + "/out.obj");
   EXPECT_EQ(refused.status, 1);
-  EXPECT_NE(refused.err.find("self-contact, which the engine does not model yet"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("friction, which the engine does not model yet"), std::string::npos) << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(folder + "/out.obj"));
+}
+
+// The scene switch for self-contact reaches the engine: the flag drapes with it on, and the
+// report names the term.
+TEST(DrapeFree, SelfContactIsASceneSwitch) {
+  const std::string folder = make_sample_folder("flag", 600);
+  std::string scene = test::read_text(folder + "/scene.xml");
+  const size_t at = scene.find("self-contact=\"false\"");
+  ASSERT_NE(at, std::string::npos) << scene;
+  scene.replace(at, std::string("self-contact=\"false\"").size(), "self-contact=\"true\"");
+  test::write_text(folder + "/self.xml", scene);
+  const auto r = test::run(test::tool_path("drape-free") + " --json " + folder + "/self.xml -o " + folder + "/self.obj");
+  ASSERT_EQ(r.status, 0) << r.err << r.out;
+  EXPECT_NE(r.out.find("\"self_contact\":"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(folder + "/self.obj"));
 }
 
 } // namespace

@@ -1,6 +1,8 @@
 // Every energy term's gradient and Hessian against central finite differences, at random
 // configurations, nearly degenerate triangles included (relative error < 1e-5).
+#include <numbers>
 #include <random>
+#include <tuple>
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
@@ -8,6 +10,8 @@
 #include "sim/bending.h"
 #include "sim/cloth_energy.h"
 #include "sim/membrane.h"
+#include "sim/self_contact.h"
+#include "samples/grid_garment.h"
 #include "support/test_support.h"
 
 namespace foldsketch {
@@ -200,6 +204,101 @@ TEST(Derivatives, ContactCertificatesChangeNothing) {
     for (int v = 0; v < x.rows(); ++v) x.row(v) += Vector3d(step(rng), step(rng), step(rng)).transpose();
   }
   EXPECT_GT(in_contact, 10);  // the comparison covered contact, not only free flight
+}
+
+// Self-contact penalty of a vertex against a triangle, with the vertex in each of the seven
+// regions (face, three edges, three corners) of an ordinary and of a 0.5-degree sliver
+// triangle, at 10-90 % of the contact thickness and away from region borders (where only the
+// gradient is continuous).
+TEST(Derivatives, SelfContactPenaltyInEveryRegion) {
+  const double thickness = 1e-3, k = 100.0;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.1, 0.9);
+  const double sliver = 0.5 * std::numbers::pi / 180;
+  const std::array<std::array<Vector3d, 3>, 2> triangles{{
+      {Vector3d(0, 0, 0), Vector3d(0.01, 0.001, 0.002), Vector3d(0.003, 0.009, -0.001)},
+      {Vector3d(0, 0, 0), Vector3d(0.01, 0, 0), Vector3d(0.005, 0.005 * std::tan(sliver), 0)}}};
+  for (const auto& [a, b, c] : triangles) {
+    const Vector3d corners[3] = {a, b, c};
+    for (int feature = 0; feature < 7; ++feature) {
+      // The feature's nearest point to aim near: a face point, an edge point or the corner.
+      int found = 0;
+      for (int attempt = 0; attempt < 20000 && found < 3; ++attempt) {
+        Vector3d target;
+        if (feature == 0) {
+          Vector3d w(fraction(rng), fraction(rng), fraction(rng));
+          w /= w.sum();
+          target = w(0) * a + w(1) * b + w(2) * c;
+        } else if (feature <= 3) {
+          const double s = fraction(rng);
+          target = (1 - s) * corners[feature - 1] + s * corners[feature % 3];
+        } else {
+          target = corners[feature - 4];
+        }
+        const Vector3d p = target + fraction(rng) * thickness * Vector3d(unit(rng), unit(rng), unit(rng)).normalized();
+        Eigen::Matrix<double, 12, 1> q;
+        q << p, a, b, c;
+        const auto region = [](const Eigen::Matrix<double, 12, 1>& y) {
+          return closest_point_on_triangle(y.segment<3>(0), y.segment<3>(3), y.segment<3>(6), y.segment<3>(9)).feature;
+        };
+        const double d = point_triangle_distance(p, a, b, c);
+        if (region(q) != feature || d < 0.1 * thickness || d > 0.9 * thickness) continue;
+        bool inside = true;  // every finite-difference probe stays in the same region
+        for (int i = 0; i < 12 && inside; ++i)
+          for (const double step : {-1e-6, 1e-6}) {
+            Eigen::Matrix<double, 12, 1> y = q;
+            y(i) += step;
+            inside = inside && region(y) == feature;
+          }
+        if (!inside) continue;
+        ++found;
+        check_derivatives<12>(q, 1e-9, [&](const Eigen::Matrix<double, 12, 1>& y) {
+          const Element12 e = point_triangle_penalty(y.segment<3>(0), y.segment<3>(3), y.segment<3>(6), y.segment<3>(9), thickness, k, true);
+          return std::tuple{e.energy, e.gradient, e.hessian};
+        }, ("self-contact region " + std::to_string(feature)).c_str());
+      }
+      EXPECT_EQ(found, 3) << "no configurations found in region " << feature;
+    }
+  }
+}
+
+// The assembled energy with self-contact: two stacked sheets, the upper one crumpled into the
+// lower one's contact layer, against finite differences of the whole (after prepare()).
+TEST(Derivatives, AssembledEnergyWithSelfContact) {
+  Garment g = grid_garment({flat_panel("lower", 3, 3, 0.03, 0.03, {0, 0, 0.03}, Vector3d::UnitX(), -Vector3d::UnitZ()),
+                            flat_panel("upper", 2, 2, 0.02, 0.02, {0.004, 0.0006, 0.025}, Vector3d::UnitX(), -Vector3d::UnitZ())},
+                           1e-9);
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> jitter(-0.0003, 0.0003);
+  for (int v = 16; v < g.V.rows(); ++v) g.V.row(v) += Vector3d(jitter(rng), jitter(rng), jitter(rng)).transpose();
+  Scene scene;
+  scene.material = *material_preset("cotton-thin");
+  scene.physics.body_contact = false;
+  scene.physics.self_contact = true;
+  const ClothModel model = cloth_model(g, scene, nullptr, {0, 3, 12, 15});
+  ClothEnergy energy(model);
+  EXPECT_TRUE(energy.prepare(g.V));
+  VectorXd g0;
+  SparseMatrix H;
+  const EnergyTerms terms = energy.evaluate(g.V, &g0, &H, HessianKind::Exact);
+  ASSERT_GT(terms.self_contact, 0.0);
+  const Eigen::MatrixXd dense = Eigen::MatrixXd(H);
+  const double h = 1e-9;
+  VectorXd g_fd(g0.size());
+  Eigen::MatrixXd H_fd(g0.size(), g0.size());
+  for (int a = 0; a < energy.free_count(); ++a)
+    for (int c = 0; c < 3; ++c) {
+      MatrixX3d plus = g.V, minus = g.V;
+      plus(energy.free_vertices()[a], c) += h;
+      minus(energy.free_vertices()[a], c) -= h;
+      VectorXd gp, gm;
+      const double ep = energy.evaluate(plus, &gp, nullptr, HessianKind::Exact).total();
+      const double em = energy.evaluate(minus, &gm, nullptr, HessianKind::Exact).total();
+      g_fd(3 * a + c) = (ep - em) / (2 * h);
+      H_fd.col(3 * a + c) = (gp - gm) / (2 * h);
+    }
+  EXPECT_LT(relative_error(g0, g_fd), kTolerance);
+  EXPECT_LT(relative_error(dense, H_fd), kTolerance);
 }
 
 } // namespace

@@ -9,6 +9,7 @@
 #include "samples/grid_garment.h"
 #include "samples/sample_scenes.h"
 #include "sim/drape_solver.h"
+#include "sim/self_contact.h"
 
 namespace foldsketch {
 namespace {
@@ -113,6 +114,62 @@ TEST(HardCases, NaNInputIsRefusedNotPropagated) {
   const ClothModel model = cloth_model(g, hanging_scene(*material_preset("cotton-thin")), nullptr, top_row(g));
   g.V(3, 1) = std::nan("");
   EXPECT_THROW(solve_drape(model, g.V, {}), std::invalid_argument);
+}
+
+// A knife pleat pressed flat: a silk strip folded into three layers 10 mm apart (folds of 5 mm
+// radius), both ends held, drops under its weight onto a pinned sheet. With self-contact the
+// layers come to rest stacked, each vertex at least half the contact thickness from every
+// other layer; the step bound keeps vertices from passing through the other layers on the way.
+// Measured: 176 Newton iterations, 1.6 s. (The same pleat in thin cotton, 2 mm folds and
+// 2.5 mm cells still crawled at a residual of 3 after 300 iterations: its folds spring open.)
+Garment z_folded_strip(double length, double radius, double width, double spacing) {
+  const double arc = std::numbers::pi * radius, total = 3 * length + 2 * arc;
+  const int along = static_cast<int>(std::lround(total / spacing)), across = static_cast<int>(std::lround(width / spacing));
+  GridPanel strip = flat_panel("strip", across, along, width, total, {0, 0, 0}, Vector3d::UnitZ(), Vector3d::UnitX());
+  const double y0 = 0.002;
+  for (int p = 0; p < strip.drape.rows(); ++p) {
+    const double s = strip.pattern(p, 1), z = strip.pattern(p, 0);
+    Vector3d at;
+    if (s <= length) at = {s, y0, z};
+    else if (s <= length + arc) {
+      const double a = (s - length) / radius;  // around the +x end, bottom to top
+      at = {length + radius * std::sin(a), y0 + radius - radius * std::cos(a), z};
+    } else if (s <= 2 * length + arc) at = {length - (s - length - arc), y0 + 2 * radius, z};
+    else if (s <= 2 * length + 2 * arc) {
+      const double a = (s - 2 * length - arc) / radius;  // around the x = 0 end
+      at = {-radius * std::sin(a), y0 + 3 * radius - radius * std::cos(a), z};
+    } else at = {s - 2 * length - 2 * arc, y0 + 4 * radius, z};
+    strip.drape.row(p) = at.transpose();
+  }
+  GridPanel floor = flat_panel("floor", 12, 4, 0.24, 0.08, {-0.06, 0, 0.06}, Vector3d::UnitX(), -Vector3d::UnitZ());
+  return grid_garment({strip, floor}, 1e-9);
+}
+
+TEST(HardCases, PleatPressedFlatKeepsItsLayersApart) {
+  const double length = 0.1, radius = 0.005;
+  const Garment g = z_folded_strip(length, radius, 0.02, 0.005);
+  Scene scene = hanging_scene(*material_preset("silk"));
+  scene.physics.self_contact = true;
+  // Held: the floor, the strip's first and last rows.
+  std::vector<int> held;
+  const double total = 3 * length + 2 * std::numbers::pi * radius;
+  for (int v = 0; v < g.V.rows(); ++v)
+    if (g.V(v, 1) == 0.0 || g.P(v, 1) < 1e-9 || (g.P(v, 1) > total - 1e-9 && g.face_panel.size() > 0)) held.push_back(v);
+  const ClothParams params;
+  const ClothModel model = cloth_model(g, scene, nullptr, held, params);
+  DrapeSettings settings;
+  const DrapeResult r = solve_drape(model, g.V, settings);
+  expect_converged_and_finite(r);
+  EXPECT_GT(r.stats.energy.self_contact, 0.0);
+  // Every vertex at least half the thickness from every element not next to it.
+  EXPECT_TRUE(self_contact_pairs(*model.self_contact, r.V, 0.5 * params.self_contact_thickness).empty());
+  // The strip settled: on average its vertices dropped.
+  EXPECT_LT(r.V.col(1).mean(), g.V.col(1).mean() - 0.001);
+  // Without self-contact the same strip falls through the floor and through itself.
+  scene.physics.self_contact = false;
+  ClothModel loose = cloth_model(g, scene, nullptr, held, params);
+  const DrapeResult fallen = solve_drape(loose, g.V, settings);
+  EXPECT_FALSE(self_contact_pairs(*model.self_contact, fallen.V, 0.5 * params.self_contact_thickness).empty());
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 // catenary, an unstressed garment at rest, and the Cusick drape test.
 #include <cmath>
 #include <numbers>
+#include <numeric>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -145,6 +146,39 @@ TEST(Physics, CatenarySag) {
   const DrapeResult r = drape(g, scene_without_body(custom_material(0.150, 1e5, 1e-8)), ends);
   const double sag = -r.V.col(1).minCoeff();
   EXPECT_NEAR(sag, 0.2923, 0.01 * 0.2923) << "sag " << sag;
+}
+
+// Self-contact: a free sheet (20 x 20 cm) dropped from 2 mm onto a pinned sheet comes to rest
+// in the lower sheet's 1 mm contact layer, never through it (37 Newton iterations). Each
+// acting pair pushes with k A (t - d): the upper sheet's vertices against the lower sheet, and
+// the lower sheet's vertices under it against the upper one. So the sink t - d lies between
+// rho g / (2 k) (as many lower vertices under it as its own) and rho g / k (none). Without
+// friction the sheet also slides a little, to where more lower vertices hold it. Measured: mean
+// sink 0.83 um, from 0.29 to 1.47 um, against rho g / k = 1.47 um.
+TEST(Physics, SheetRestsOnSheet) {
+  const double rho = 0.150;
+  const Garment g = grid_garment({flat_panel("lower", 15, 15, 0.3, 0.3, {0, 0, 0.3}, Vector3d::UnitX(), -Vector3d::UnitZ()),
+                                  flat_panel("upper", 10, 10, 0.2, 0.2, {0.065, 0.002, 0.2575}, Vector3d::UnitX(), -Vector3d::UnitZ())},
+                                 1e-9);
+  ASSERT_EQ(g.V.rows(), 16 * 16 + 11 * 11);
+  std::vector<int> lower(16 * 16);
+  std::iota(lower.begin(), lower.end(), 0);
+  Scene scene = scene_without_body(custom_material(rho, 261.0, 2.34e-6, 0.3));
+  scene.physics.self_contact = true;
+  const ClothParams params;
+  const ClothModel model = cloth_model(g, scene, nullptr, lower, params);
+  DrapeSettings settings;
+  settings.tolerance = 1e-7;
+  const DrapeResult r = solve_drape(model, g.V, settings);
+  ASSERT_TRUE(r.stats.converged) << r.stats.message;
+  EXPECT_GT(r.stats.energy.self_contact, 0.0);
+  const double t = params.self_contact_thickness, full_sink = rho * kGravity / params.self_contact_stiffness;
+  const Eigen::VectorXd heights = r.V.col(1).tail(11 * 11);
+  EXPECT_LT(heights.maxCoeff(), t);              // every vertex held in the layer
+  EXPECT_GT(heights.minCoeff(), t - full_sink);  // and none sunk deeper than its own weight allows
+  EXPECT_GT(t - heights.mean(), 0.5 * full_sink);
+  EXPECT_LT(t - heights.mean(), full_sink);
+  EXPECT_EQ(r.V.topRows(16 * 16), g.V.topRows(16 * 16));
 }
 
 // d) An unstressed garment, unpinned, without gravity: zero force, and it does not move.

@@ -1,0 +1,276 @@
+#include "sim/self_contact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include <Eigen/Geometry>
+
+namespace foldsketch {
+namespace {
+
+using Vec12 = Eigen::Matrix<double, 12, 1>;
+using Mat12 = Eigen::Matrix<double, 12, 12>;
+
+// A value with its gradient and Hessian over the 12 coordinates of (p, a, b, c), carried
+// through each operation (second-order forward differentiation). The distance formulas below
+// are short, so this costs a few thousand flops per pair and cannot disagree with them.
+struct Hyper {
+  double v = 0;
+  Vec12 g = Vec12::Zero();
+  Mat12 H = Mat12::Zero();
+};
+using Hyper3 = std::array<Hyper, 3>;
+
+Hyper operator+(const Hyper& a, const Hyper& b) { return {a.v + b.v, a.g + b.g, a.H + b.H}; }
+Hyper operator-(const Hyper& a, const Hyper& b) { return {a.v - b.v, a.g - b.g, a.H - b.H}; }
+Hyper operator*(const Hyper& a, const Hyper& b) {
+  const Mat12 outer = a.g * b.g.transpose();
+  return {a.v * b.v, a.v * b.g + b.v * a.g, a.v * b.H + b.v * a.H + outer + outer.transpose()};
+}
+// f(a) from f(a.v), f'(a.v), f''(a.v).
+Hyper chain(const Hyper& a, double f, double f1, double f2) { return {f, f1 * a.g, f1 * a.H + f2 * a.g * a.g.transpose()}; }
+Hyper reciprocal(const Hyper& a) { return chain(a, 1.0 / a.v, -1.0 / (a.v * a.v), 2.0 / (a.v * a.v * a.v)); }
+
+Hyper3 corner(const Eigen::Matrix<double, 12, 1>& q, int k) {
+  Hyper3 out;
+  for (int c = 0; c < 3; ++c) {
+    out[c].v = q(3 * k + c);
+    out[c].g(3 * k + c) = 1.0;
+  }
+  return out;
+}
+Hyper3 minus(const Hyper3& a, const Hyper3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Hyper dot(const Hyper3& a, const Hyper3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Hyper3 cross(const Hyper3& a, const Hyper3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// Squared distance from p (corner 0) to the given feature of triangle (corners 1, 2, 3):
+// each formula is smooth inside its feature's region, and they agree to first order where
+// regions meet.
+Hyper squared_distance(const Vec12& q, int feature) {
+  const Hyper3 p = corner(q, 0);
+  if (feature == 0) {  // face: ((p - a).n)^2 / |n|^2
+    const Hyper3 a = corner(q, 1);
+    const Hyper3 n = cross(minus(corner(q, 2), a), minus(corner(q, 3), a));
+    const Hyper h = dot(minus(p, a), n);
+    return h * h * reciprocal(dot(n, n));
+  }
+  if (feature <= 3) {  // edge i -> j: |(p - xi) x e|^2 / |e|^2
+    const int i = feature, j = feature % 3 + 1;
+    const Hyper3 xi = corner(q, i);
+    const Hyper3 e = minus(corner(q, j), xi);
+    const Hyper3 r = cross(minus(p, xi), e);
+    return dot(r, r) * reciprocal(dot(e, e));
+  }
+  const Hyper3 r = minus(p, corner(q, feature - 3));  // corner
+  return dot(r, r);
+}
+
+// Uniform grid of boxes, for the broad phase: items are listed in every cell their box
+// touches, queries read the cells of a point or a box.
+class CellGrid {
+public:
+  explicit CellGrid(double cell) : cell_(cell) {}
+  void insert(const Eigen::AlignedBox3d& box, int item) {
+    const Eigen::Vector3i lo = index(box.min()), hi = index(box.max());
+    for (int i = lo.x(); i <= hi.x(); ++i)
+      for (int j = lo.y(); j <= hi.y(); ++j)
+        for (int k = lo.z(); k <= hi.z(); ++k) entries_.push_back({key({i, j, k}), item});
+  }
+  void finish() { std::sort(entries_.begin(), entries_.end()); }
+  // Calls f(item) for every item listed in a cell touching `box` (an item may come repeatedly).
+  template <typename F>
+  void query(const Eigen::AlignedBox3d& box, F f) const {
+    const Eigen::Vector3i lo = index(box.min()), hi = index(box.max());
+    for (int i = lo.x(); i <= hi.x(); ++i)
+      for (int j = lo.y(); j <= hi.y(); ++j)
+        for (int k = lo.z(); k <= hi.z(); ++k) {
+          const uint64_t cell = key({i, j, k});
+          auto it = std::lower_bound(entries_.begin(), entries_.end(), std::pair<uint64_t, int>{cell, -1});
+          for (; it != entries_.end() && it->first == cell; ++it) f(it->second);
+        }
+  }
+
+private:
+  Eigen::Vector3i index(const Vector3d& p) const { return (p / cell_).array().floor().cast<int>(); }
+  // 21 bits per axis: +-1e6 cells, 10 km at 1 cm cells.
+  static uint64_t key(const Eigen::Vector3i& c) {
+    constexpr int64_t kOffset = int64_t{1} << 20;
+    const auto part = [&](int v) { return static_cast<uint64_t>(std::clamp<int64_t>(v + kOffset, 0, 2 * kOffset - 1)); };
+    return part(c.x()) << 42 | part(c.y()) << 21 | part(c.z());
+  }
+  double cell_;
+  std::vector<std::pair<uint64_t, int>> entries_;
+};
+
+Eigen::AlignedBox3d box_of(const MatrixX3d& x, const int* vs, int count, double margin) {
+  Eigen::AlignedBox3d box;
+  for (int i = 0; i < count; ++i) box.extend(Vector3d(x.row(vs[i])));
+  box.min().array() -= margin;
+  box.max().array() += margin;
+  return box;
+}
+
+// Cell size: the search radius, but not below the mean edge length, so that a triangle is
+// listed in a few cells only.
+double cell_size(const SelfContactModel& model, const MatrixX3d& x, double radius) {
+  double sum = 0.0;
+  for (const auto& e : model.edges) sum += (x.row(e[0]) - x.row(e[1])).norm();
+  const double mean = model.edges.empty() ? 0.0 : sum / static_cast<double>(model.edges.size());
+  return std::max({radius, mean, 1e-6});
+}
+
+bool excluded(const SelfContactModel& model, int v, const int* corners, int count) {
+  const std::vector<int>& near = model.near[static_cast<size_t>(v)];
+  for (int i = 0; i < count; ++i)
+    if (std::binary_search(near.begin(), near.end(), corners[i])) return true;
+  return false;
+}
+
+} // namespace
+
+TriangleClosestPoint closest_point_on_triangle(const Vector3d& p, const Vector3d& a, const Vector3d& b, const Vector3d& c) {
+  // Ericson, Real-Time Collision Detection (2005), 5.1.5: Voronoi regions in turn.
+  const Vector3d ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return {{1, 0, 0}, 4};
+  const Vector3d bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return {{0, 1, 0}, 5};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+    const double t = d1 / (d1 - d3);
+    return {{1 - t, t, 0}, 1};
+  }
+  const Vector3d cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return {{0, 0, 1}, 6};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+    const double t = d2 / (d2 - d6);
+    return {{1 - t, 0, t}, 3};
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) {
+    const double t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {{0, 1 - t, t}, 2};
+  }
+  const double sum = va + vb + vc;
+  if (!(sum > 0.0)) {  // collapsed triangle: the nearest of its edges
+    TriangleClosestPoint best{{1, 0, 0}, 4};
+    double best_distance = INFINITY;
+    const Vector3d x[3] = {a, b, c};
+    for (int e = 0; e < 3; ++e) {
+      const Vector3d s = x[e], d = x[(e + 1) % 3] - s;
+      const double t = d.squaredNorm() > 0.0 ? std::clamp((p - s).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+      const double dist = (p - s - t * d).norm();
+      if (dist < best_distance) {
+        best_distance = dist;
+        best.weights.setZero();
+        best.weights(e) = 1 - t;
+        best.weights((e + 1) % 3) = t;
+        best.feature = e + 1;
+      }
+    }
+    return best;
+  }
+  return {{va / sum, vb / sum, vc / sum}, 0};
+}
+
+double point_triangle_distance(const Vector3d& p, const Vector3d& a, const Vector3d& b, const Vector3d& c) {
+  const Vector3d w = closest_point_on_triangle(p, a, b, c).weights;
+  return (p - w(0) * a - w(1) * b - w(2) * c).norm();
+}
+
+Element12 point_triangle_penalty(const Vector3d& p, const Vector3d& a, const Vector3d& b, const Vector3d& c, double thickness,
+                                 double k, bool want_hessian) {
+  Element12 out;
+  out.gradient.setZero();
+  if (want_hessian) out.hessian.setZero();
+  const TriangleClosestPoint closest = closest_point_on_triangle(p, a, b, c);
+  const Vector3d w = closest.weights;
+  const Vector3d offset = p - w(0) * a - w(1) * b - w(2) * c;
+  const double d = offset.norm();
+  if (d >= thickness) return out;
+  out.energy = 0.5 * k * (thickness - d) * (thickness - d);
+  if (!(d > 0.0)) return out;  // touching: the direction is undefined, and so are the forces
+  // dE/dd = -k (t - d); d's gradient: the unit offset at p, minus the weights at the corners
+  // (the closest point moves along the triangle, which changes d only to second order).
+  const Vector3d n = offset / d;
+  out.gradient << n, -w(0) * n, -w(1) * n, -w(2) * n;
+  out.gradient *= -k * (thickness - d);
+  if (want_hessian) {
+    Vec12 q;
+    q << p, a, b, c;
+    const Hyper s = squared_distance(q, closest.feature);
+    // d = sqrt(s), E = k/2 (t - d)^2: E'(s) = -k (t - d) / (2 d), E''(s) = k t / (4 d^3).
+    out.hessian = -k * (thickness - d) / (2.0 * d) * s.H + k * thickness / (4.0 * d * d * d) * s.g * s.g.transpose();
+  }
+  return out;
+}
+
+std::vector<std::array<int, 2>> self_contact_pairs(const SelfContactModel& model, const MatrixX3d& x, double radius) {
+  CellGrid grid(cell_size(model, x, radius));
+  for (size_t t = 0; t < model.triangles.size(); ++t) grid.insert(box_of(x, model.triangles[t].data(), 3, radius), static_cast<int>(t));
+  grid.finish();
+  std::vector<std::array<int, 2>> pairs;
+  for (int v : model.vertices) {
+    const Vector3d p = x.row(v);
+    grid.query(Eigen::AlignedBox3d(p, p), [&](int t) {
+      const auto& tri = model.triangles[static_cast<size_t>(t)];
+      if (excluded(model, v, tri.data(), 3)) return;
+      if (point_triangle_distance(p, x.row(tri[0]), x.row(tri[1]), x.row(tri[2])) < radius) pairs.push_back({v, t});
+    });
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+std::vector<std::array<int, 2>> self_contact_active_pairs(const SelfContactModel& model, const MatrixX3d& x) {
+  const std::vector<std::array<int, 2>> pairs = self_contact_pairs(model, x, model.thickness);
+  std::vector<std::array<int, 2>> out;
+  std::vector<std::pair<double, int>> candidates;
+  for (size_t begin = 0, end = 0; begin < pairs.size(); begin = end) {
+    const int v = pairs[begin][0];
+    candidates.clear();
+    for (end = begin; end < pairs.size() && pairs[end][0] == v; ++end) {
+      const auto& tri = model.triangles[static_cast<size_t>(pairs[end][1])];
+      candidates.push_back({point_triangle_distance(x.row(v), x.row(tri[0]), x.row(tri[1]), x.row(tri[2])), pairs[end][1]});
+    }
+    std::sort(candidates.begin(), candidates.end());
+    const size_t first = out.size();
+    for (const auto& [distance, t] : candidates) {
+      const auto& tri = model.triangles[static_cast<size_t>(t)];
+      bool same_layer = false;
+      for (size_t k = first; k < out.size() && !same_layer; ++k)
+        for (int c : model.triangles[static_cast<size_t>(out[k][1])])
+          same_layer = same_layer || c == tri[0] || c == tri[1] || c == tri[2];
+      if (!same_layer) out.push_back({v, t});
+    }
+  }
+  return out;
+}
+
+double self_contact_step_bound(const SelfContactModel& model, const MatrixX3d& x, const MatrixX3d& dx, double keep) {
+  double largest = 0.0;
+  for (int v : model.vertices) largest = std::max(largest, dx.row(v).norm());
+  if (!(largest > 0.0)) return 1.0;
+  // A point and a triangle close in on each other by at most twice the largest move: pairs
+  // farther apart than this cannot come within `keep` of their distance.
+  const double radius = 2.0 * largest / (1.0 - keep);
+  double alpha = 1.0;
+  const auto limit = [&](double distance, double relative_move) {
+    if (distance > 0.0 && relative_move > 0.0) alpha = std::min(alpha, (1.0 - keep) * distance / relative_move);
+  };
+  for (const auto& [v, t] : self_contact_pairs(model, x, radius)) {
+    const auto& tri = model.triangles[static_cast<size_t>(t)];
+    double move = 0.0;
+    for (int c : tri) move = std::max(move, (dx.row(v) - dx.row(c)).norm());
+    limit(point_triangle_distance(x.row(v), x.row(tri[0]), x.row(tri[1]), x.row(tri[2])), move);
+  }
+  return alpha;
+}
+
+} // namespace foldsketch
