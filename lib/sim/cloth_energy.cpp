@@ -130,6 +130,13 @@ bool ClothEnergy::prepare(const MatrixX3d& x) {
         couple(b, a);
       }
   }
+  for (const auto& [e, f] : self_contact_edge_pairs(sc, x, kPatternReach * sc.thickness)) {
+    const auto &a = sc.edges[static_cast<size_t>(e)], &b = sc.edges[static_cast<size_t>(f)];
+    const int vs[4] = {free_index_[a[0]], free_index_[a[1]], free_index_[b[0]], free_index_[b[1]]};
+    for (int i : vs)
+      for (int j : vs)
+        if (i >= 0 && j >= 0) couple(i, j);
+  }
   if (grew) build_pattern();
   return grew;
 }
@@ -182,6 +189,7 @@ EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, Sparse
   std::vector<EnergyTerms> thread_terms(static_cast<size_t>(threads));
   const SelfContactModel* sc = model_.self_contact ? &*model_.self_contact : nullptr;
   const std::vector<std::array<int, 2>> self_pairs = sc ? self_contact_active_pairs(*sc, x) : std::vector<std::array<int, 2>>{};
+  const std::vector<std::array<int, 2>> edge_pairs = sc ? self_contact_edge_pairs(*sc, x, sc->thickness) : std::vector<std::array<int, 2>>{};
   const auto work = [&](int me_int) {
     const auto me = static_cast<size_t>(me_int);
     VectorXd& grad = thread_gradients[me];
@@ -237,6 +245,20 @@ EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, Sparse
       const std::array<int, 4> vs{v, tri[0], tri[1], tri[2]};
       const Element12 e = point_triangle_penalty(x.row(v), x.row(tri[0]), x.row(tri[1]), x.row(tri[2]), sc->thickness,
                                                  sc->stiffness * model_.contact_area(v), want_hessian);
+      mine.self_contact += e.energy;
+      add_gradient(vs.data(), 4, e.gradient);
+      if (want_hessian) scatter<4>(blocks_for(vs.data(), 4), e.hessian, values);
+    }
+    for (auto [i, end] = share(edge_pairs.size()); i < end; ++i) {
+      const auto& a = sc->edges[static_cast<size_t>(edge_pairs[static_cast<size_t>(i)][0])];
+      const auto& b = sc->edges[static_cast<size_t>(edge_pairs[static_cast<size_t>(i)][1])];
+      const std::array<int, 4> vs{a[0], a[1], b[0], b[1]};
+      // An edge pair's area share: a third of its vertices' mean share (a mesh has about three
+      // edges per vertex), so edges and vertices weigh alike.
+      double area = 0.0;
+      for (int v : vs) area += model_.contact_area(v) / 12.0;
+      const Element12 e = edge_edge_penalty(x.row(a[0]), x.row(a[1]), x.row(b[0]), x.row(b[1]), sc->thickness, sc->stiffness * area,
+                                            want_hessian);
       mine.self_contact += e.energy;
       add_gradient(vs.data(), 4, e.gradient);
       if (want_hessian) scatter<4>(blocks_for(vs.data(), 4), e.hessian, values);

@@ -22,6 +22,11 @@ struct Hyper {
 };
 using Hyper3 = std::array<Hyper, 3>;
 
+// Edge-edge mollifier (Li et al. 2020, Incremental Potential Contact, section 4.3): the pair's
+// energy fades smoothly to zero as the edges turn parallel, below |u x v|^2 = kMollifier |u|^2
+// |v|^2, where their closest points are ill-defined.
+constexpr double kMollifier = 1e-3;
+
 Hyper operator+(const Hyper& a, const Hyper& b) { return {a.v + b.v, a.g + b.g, a.H + b.H}; }
 Hyper operator-(const Hyper& a, const Hyper& b) { return {a.v - b.v, a.g - b.g, a.H - b.H}; }
 Hyper operator*(const Hyper& a, const Hyper& b) {
@@ -31,6 +36,11 @@ Hyper operator*(const Hyper& a, const Hyper& b) {
 // f(a) from f(a.v), f'(a.v), f''(a.v).
 Hyper chain(const Hyper& a, double f, double f1, double f2) { return {f, f1 * a.g, f1 * a.H + f2 * a.g * a.g.transpose()}; }
 Hyper reciprocal(const Hyper& a) { return chain(a, 1.0 / a.v, -1.0 / (a.v * a.v), 2.0 / (a.v * a.v * a.v)); }
+Hyper constant(double value) { return {value, Vec12::Zero(), Mat12::Zero()}; }
+Hyper root(const Hyper& a) {
+  const double r = std::sqrt(a.v);
+  return chain(a, r, 0.5 / r, -0.25 / (r * a.v));
+}
 
 Hyper3 corner(const Eigen::Matrix<double, 12, 1>& q, int k) {
   Hyper3 out;
@@ -66,6 +76,14 @@ Hyper squared_distance(const Vec12& q, int feature) {
   }
   const Hyper3 r = minus(p, corner(q, feature - 3));  // corner
   return dot(r, r);
+}
+
+// Squared distance from point (corner i) to the line through corners j, k.
+Hyper point_line_squared(const Vec12& q, int i, int j, int k) {
+  const Hyper3 xj = corner(q, j);
+  const Hyper3 e = minus(corner(q, k), xj);
+  const Hyper3 r = cross(minus(corner(q, i), xj), e);
+  return dot(r, r) * reciprocal(dot(e, e));
 }
 
 // Uniform grid of boxes, for the broad phase: items are listed in every cell their box
@@ -184,6 +202,74 @@ double point_triangle_distance(const Vector3d& p, const Vector3d& a, const Vecto
   return (p - w(0) * a - w(1) * b - w(2) * c).norm();
 }
 
+double segment_segment_distance(const Vector3d& p0, const Vector3d& p1, const Vector3d& q0, const Vector3d& q1) {
+  return segment_closest_parameters(p0, p1, q0, q1).distance;
+}
+
+SegmentClosestPoints segment_closest_parameters(const Vector3d& p0, const Vector3d& p1, const Vector3d& q0, const Vector3d& q1) {
+  // Ericson, Real-Time Collision Detection (2005), 5.1.9, degenerate segments included.
+  const Vector3d d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  double s = 0.0, t = 0.0;
+  if (a > 0.0 && e <= 0.0) {
+    s = std::clamp(-d1.dot(r) / a, 0.0, 1.0);
+  } else if (a <= 0.0 && e > 0.0) {
+    t = std::clamp(f / e, 0.0, 1.0);
+  } else if (a > 0.0 && e > 0.0) {
+    const double c = d1.dot(r), b = d1.dot(d2), denom = a * e - b * b;
+    s = denom > 0.0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+    t = (b * s + f) / e;
+    if (t < 0.0) {
+      t = 0.0;
+      s = std::clamp(-c / a, 0.0, 1.0);
+    } else if (t > 1.0) {
+      t = 1.0;
+      s = std::clamp((b - c) / a, 0.0, 1.0);
+    }
+  }
+  return {s, t, (p0 + s * d1 - q0 - t * d2).norm()};
+}
+
+Element12 edge_edge_penalty(const Vector3d& p0, const Vector3d& p1, const Vector3d& q0, const Vector3d& q1, double thickness,
+                            double k, bool want_hessian) {
+  Element12 out;
+  out.energy = 0.0;
+  out.gradient.setZero();
+  out.hessian.setZero();
+  const SegmentClosestPoints closest = segment_closest_parameters(p0, p1, q0, q1);
+  if (!(closest.distance < thickness) || !(closest.distance > 0.0)) return out;
+  Vec12 q;
+  q << p0, p1, q0, q1;
+  // The squared distance by the formula of the closest points' features: interior-interior is
+  // the distance between the lines, an end against the other edge's interior is point-line,
+  // two ends point-point. They agree to first order where the features change.
+  const bool s_inside = closest.s > 0.0 && closest.s < 1.0, t_inside = closest.t > 0.0 && closest.t < 1.0;
+  const int p_end = closest.s <= 0.0 ? 0 : 1, q_end = closest.t <= 0.0 ? 2 : 3;
+  Hyper squared;
+  const Hyper3 u = minus(corner(q, 1), corner(q, 0)), v = minus(corner(q, 3), corner(q, 2));
+  const Hyper3 n = cross(u, v);
+  const Hyper skew = dot(n, n);
+  if (s_inside && t_inside) {
+    const Hyper h = dot(minus(corner(q, 0), corner(q, 2)), n);
+    squared = h * h * reciprocal(skew);
+  } else if (t_inside) {
+    squared = point_line_squared(q, p_end, 2, 3);
+  } else if (s_inside) {
+    squared = point_line_squared(q, q_end, 0, 1);
+  } else {
+    const Hyper3 r = minus(corner(q, p_end), corner(q, q_end));
+    squared = dot(r, r);
+  }
+  const Hyper gap = constant(thickness) - root(squared);
+  Hyper energy = constant(0.5 * k) * gap * gap;
+  const Hyper y = skew * reciprocal(constant(kMollifier) * dot(u, u) * dot(v, v));
+  if (y.v < 1.0) energy = energy * y * (constant(2.0) - y);
+  out.energy = energy.v;
+  out.gradient = energy.g;
+  if (want_hessian) out.hessian = energy.H;
+  return out;
+}
+
 Element12 point_triangle_penalty(const Vector3d& p, const Vector3d& a, const Vector3d& b, const Vector3d& c, double thickness,
                                  double k, bool want_hessian) {
   Element12 out;
@@ -228,6 +314,26 @@ std::vector<std::array<int, 2>> self_contact_pairs(const SelfContactModel& model
   return pairs;
 }
 
+std::vector<std::array<int, 2>> self_contact_edge_pairs(const SelfContactModel& model, const MatrixX3d& x, double radius) {
+  CellGrid grid(cell_size(model, x, radius));
+  for (size_t e = 0; e < model.edges.size(); ++e) grid.insert(box_of(x, model.edges[e].data(), 2, radius), static_cast<int>(e));
+  grid.finish();
+  std::vector<std::array<int, 2>> pairs;
+  std::vector<int> seen(model.edges.size(), -1);
+  for (size_t e = 0; e < model.edges.size(); ++e) {
+    const auto& a = model.edges[e];
+    grid.query(box_of(x, a.data(), 2, 0.0), [&](int f) {
+      if (f <= static_cast<int>(e) || seen[static_cast<size_t>(f)] == static_cast<int>(e)) return;
+      seen[static_cast<size_t>(f)] = static_cast<int>(e);
+      const auto& b = model.edges[static_cast<size_t>(f)];
+      if (excluded(model, a[0], b.data(), 2) || excluded(model, a[1], b.data(), 2)) return;
+      if (segment_segment_distance(x.row(a[0]), x.row(a[1]), x.row(b[0]), x.row(b[1])) < radius) pairs.push_back({static_cast<int>(e), f});
+    });
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
 std::vector<std::array<int, 2>> self_contact_active_pairs(const SelfContactModel& model, const MatrixX3d& x) {
   const std::vector<std::array<int, 2>> pairs = self_contact_pairs(model, x, model.thickness);
   std::vector<std::array<int, 2>> out;
@@ -257,8 +363,8 @@ double self_contact_step_bound(const SelfContactModel& model, const MatrixX3d& x
   double largest = 0.0;
   for (int v : model.vertices) largest = std::max(largest, dx.row(v).norm());
   if (!(largest > 0.0)) return 1.0;
-  // A point and a triangle close in on each other by at most twice the largest move: pairs
-  // farther apart than this cannot come within `keep` of their distance.
+  // Two elements close in on each other by at most twice the largest move: pairs farther apart
+  // than this cannot come within `keep` of their distance.
   const double radius = 2.0 * largest / (1.0 - keep);
   double alpha = 1.0;
   const auto limit = [&](double distance, double relative_move) {
@@ -269,6 +375,13 @@ double self_contact_step_bound(const SelfContactModel& model, const MatrixX3d& x
     double move = 0.0;
     for (int c : tri) move = std::max(move, (dx.row(v) - dx.row(c)).norm());
     limit(point_triangle_distance(x.row(v), x.row(tri[0]), x.row(tri[1]), x.row(tri[2])), move);
+  }
+  for (const auto& [e, f] : self_contact_edge_pairs(model, x, radius)) {
+    const auto &a = model.edges[static_cast<size_t>(e)], &b = model.edges[static_cast<size_t>(f)];
+    double move = 0.0;
+    for (int i : a)
+      for (int j : b) move = std::max(move, (dx.row(i) - dx.row(j)).norm());
+    limit(segment_segment_distance(x.row(a[0]), x.row(a[1]), x.row(b[0]), x.row(b[1])), move);
   }
   return alpha;
 }

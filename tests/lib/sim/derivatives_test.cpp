@@ -262,6 +262,55 @@ TEST(Derivatives, SelfContactPenaltyInEveryRegion) {
   }
 }
 
+// Edge-edge penalty for each pair of closest features (interior-interior, an end against an
+// interior either way, end-end), at 10-90 % of the thickness, crossing at random angles and
+// nearly parallel (inside the mollifier's range), away from feature borders.
+TEST(Derivatives, EdgeEdgePenaltyForEveryFeaturePair) {
+  const double thickness = 1e-3, k = 100.0;
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.1, 0.9);
+  const auto kind = [](const Eigen::Matrix<double, 12, 1>& y) {
+    const SegmentClosestPoints c = segment_closest_parameters(y.segment<3>(0), y.segment<3>(3), y.segment<3>(6), y.segment<3>(9));
+    const auto place = [](double s) { return s <= 0.0 ? 0 : s >= 1.0 ? 2 : 1; };
+    const Vector3d u = y.segment<3>(3) - y.segment<3>(0), v = y.segment<3>(9) - y.segment<3>(6);
+    const bool mollified = u.cross(v).squaredNorm() < 1e-3 * u.squaredNorm() * v.squaredNorm();
+    return 3 * place(c.s) + place(c.t) + (mollified ? 9 : 0);  // 4: both inside; +9: mollified
+  };
+  std::vector<int> found(18, 0);
+  for (int attempt = 0; attempt < 200000; ++attempt) {
+    // Edge p along x, 1 cm; edge q through a point near p's line at a random angle.
+    const bool parallel = attempt % 3 == 0;
+    const double angle = parallel ? 0.012 + 0.016 * fraction(rng) : 3.0 * fraction(rng);
+    const Vector3d p0(0, 0, 0), p1(0.01, 0, 0);
+    const Vector3d direction(std::cos(angle), std::sin(angle), 0.3 * unit(rng));
+    const Vector3d centre(0.014 * unit(rng) + 0.005, 0.0005 * unit(rng), thickness * unit(rng));
+    const Vector3d q0 = centre - 0.006 * (1 + 0.5 * unit(rng)) * direction.normalized(), q1 = centre + 0.006 * (1 + 0.5 * unit(rng)) * direction.normalized();
+    Eigen::Matrix<double, 12, 1> q;
+    q << p0, p1, q0, q1;
+    const double d = segment_segment_distance(p0, p1, q0, q1);
+    if (d < 0.1 * thickness || d > 0.9 * thickness) continue;
+    const int type = kind(q);
+    if (type >= 18 || found[static_cast<size_t>(type)] >= 2) continue;
+    bool stable = true;
+    for (int i = 0; i < 12 && stable; ++i)
+      for (const double step : {-1e-6, 1e-6}) {
+        Eigen::Matrix<double, 12, 1> y = q;
+        y(i) += step;
+        stable = stable && kind(y) == type;
+      }
+    if (!stable) continue;
+    ++found[static_cast<size_t>(type)];
+    check_derivatives<12>(q, 1e-9, [&](const Eigen::Matrix<double, 12, 1>& y) {
+      const Element12 e = edge_edge_penalty(y.segment<3>(0), y.segment<3>(3), y.segment<3>(6), y.segment<3>(9), thickness, k, true);
+      return std::tuple{e.energy, e.gradient, e.hessian};
+    }, ("edge-edge case " + std::to_string(type)).c_str());
+  }
+  // Every feature pair crossing at an angle (the end-end cases too), and the interior case
+  // nearly parallel.
+  for (int type : {0, 1, 2, 3, 4, 5, 6, 7, 8}) EXPECT_EQ(found[static_cast<size_t>(type)], 2) << "case " << type;
+  EXPECT_EQ(found[9 + 4], 2) << "nearly parallel, interior-interior";
+}
+
 // The assembled energy with self-contact: two stacked sheets, the upper one crumpled into the
 // lower one's contact layer, against finite differences of the whole (after prepare()).
 TEST(Derivatives, AssembledEnergyWithSelfContact) {

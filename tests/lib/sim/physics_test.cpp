@@ -149,12 +149,12 @@ TEST(Physics, CatenarySag) {
 }
 
 // Self-contact: a free sheet (20 x 20 cm) dropped from 2 mm onto a pinned sheet comes to rest
-// in the lower sheet's 1 mm contact layer, never through it (37 Newton iterations). Each
-// acting pair pushes with k A (t - d): the upper sheet's vertices against the lower sheet, and
-// the lower sheet's vertices under it against the upper one. So the sink t - d lies between
-// rho g / (2 k) (as many lower vertices under it as its own) and rho g / k (none). Without
-// friction the sheet also slides a little, to where more lower vertices hold it. Measured: mean
-// sink 0.83 um, from 0.29 to 1.47 um, against rho g / k = 1.47 um.
+// in the lower sheet's 1 mm contact layer, never through it. Each acting pair pushes with
+// k A (t - d): the upper sheet's vertices against the lower sheet, the lower sheet's vertices
+// under it against the upper one, and crossing edges against each other. So every upper vertex
+// sinks into the layer by less than rho g / k, what its own weight on its own area would push
+// it (1.47 um). Measured: 0.33 um on average, 32 Newton iterations; without friction the sheet
+// also slides a little, to where more of the lower sheet holds it.
 TEST(Physics, SheetRestsOnSheet) {
   const double rho = 0.150;
   const Garment g = grid_garment({flat_panel("lower", 15, 15, 0.3, 0.3, {0, 0, 0.3}, Vector3d::UnitX(), -Vector3d::UnitZ()),
@@ -176,8 +176,6 @@ TEST(Physics, SheetRestsOnSheet) {
   const Eigen::VectorXd heights = r.V.col(1).tail(11 * 11);
   EXPECT_LT(heights.maxCoeff(), t);              // every vertex held in the layer
   EXPECT_GT(heights.minCoeff(), t - full_sink);  // and none sunk deeper than its own weight allows
-  EXPECT_GT(t - heights.mean(), 0.5 * full_sink);
-  EXPECT_LT(t - heights.mean(), full_sink);
   EXPECT_EQ(r.V.topRows(16 * 16), g.V.topRows(16 * 16));
 }
 

@@ -1,5 +1,5 @@
-// Cloth-cloth contact: the distance against brute force, the broad phase against all pairs, one
-// acting pair per layer, the step bound against a vertex tunnelling, and seams left alone.
+// Cloth-cloth contact: distances against brute force, the broad phase against all pairs, one
+// acting pair per layer, the step bound against tunnelling, and seams left alone.
 #include <random>
 
 #include <gtest/gtest.h>
@@ -17,7 +17,7 @@ Vector3d random_point(std::mt19937& rng, double size) {
   return {u(rng), u(rng), u(rng)};
 }
 
-TEST(SelfContact, DistanceMatchesDenseSampling) {
+TEST(SelfContact, DistancesMatchDenseSampling) {
   std::mt19937 rng(1);
   constexpr int kSamples = 400;
   for (int trial = 0; trial < 50; ++trial) {
@@ -31,7 +31,18 @@ TEST(SelfContact, DistanceMatchesDenseSampling) {
     const double d = point_triangle_distance(p, a, b, c);
     EXPECT_LE(d, sampled + 1e-12);
     EXPECT_GE(d, sampled - 4.0 / kSamples);  // the grid's spacing on triangles of size ~2
+    const Vector3d q = random_point(rng, 1.0);
+    double segment_sampled = INFINITY;
+    for (int i = 0; i <= kSamples; ++i)
+      for (int j = 0; j <= kSamples; ++j)
+        segment_sampled = std::min(segment_sampled, ((p + (a - p) * i / kSamples) - (q + (b - q) * j / kSamples)).norm());
+    const double s = segment_segment_distance(p, a, q, b);
+    EXPECT_LE(s, segment_sampled + 1e-12);
+    EXPECT_GE(s, segment_sampled - 4.0 / kSamples);
   }
+  // Parallel and degenerate segments.
+  EXPECT_NEAR(segment_segment_distance({0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {2, 1, 0}), 1.0, 1e-15);
+  EXPECT_NEAR(segment_segment_distance({0, 0, 0}, {0, 0, 0}, {3, 4, 0}, {3, 4, 0}), 5.0, 1e-15);
   // A collapsed triangle: the distance to its nearest edge.
   EXPECT_NEAR(point_triangle_distance({0.2, 0.2, 0.5}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}), std::hypot(0.2, 0.5), 1e-15);
 }
@@ -64,6 +75,16 @@ TEST(SelfContact, BroadPhaseFindsExactlyTheBruteForcePairs) {
       }
     EXPECT_EQ(self_contact_pairs(model, x, radius), brute) << "radius " << radius;
     EXPECT_FALSE(brute.empty());
+    std::vector<std::array<int, 2>> brute_edges;
+    for (size_t e = 0; e < model.edges.size(); ++e)
+      for (size_t f = e + 1; f < model.edges.size(); ++f) {
+        const auto &a = model.edges[e], &b = model.edges[f];
+        if (a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1]) continue;
+        if (segment_segment_distance(x.row(a[0]), x.row(a[1]), x.row(b[0]), x.row(b[1])) < radius)
+          brute_edges.push_back({static_cast<int>(e), static_cast<int>(f)});
+      }
+    EXPECT_EQ(self_contact_edge_pairs(model, x, radius), brute_edges) << "radius " << radius;
+    EXPECT_FALSE(brute_edges.empty());
   }
 }
 
@@ -103,8 +124,8 @@ TEST(SelfContact, StepBoundStopsTunnelling) {
   for (int v = 4; v < 8; ++v) dx(v, 2) = -0.02;
   const double alpha = self_contact_step_bound(model, g.V, dx, 0.1);
   EXPECT_NEAR(alpha, 0.9 * 0.005 / 0.02, 1e-12);
-  // Random steps of random sheets: along the bounded step, no vertex-triangle distance ever
-  // falls below a tenth of where it started.
+  // Random steps of random sheets: along the bounded step, no vertex-triangle or edge-edge
+  // distance ever falls below a tenth of where it started.
   std::mt19937 rng(4);
   std::normal_distribution<double> move(0.0, 0.01);
   MatrixX3d x;
@@ -122,6 +143,14 @@ TEST(SelfContact, StepBoundStopsTunnelling) {
           if (tri[0] == v || tri[1] == v || tri[2] == v) continue;
           const double before = point_triangle_distance(x.row(v), x.row(tri[0]), x.row(tri[1]), x.row(tri[2]));
           const double after = point_triangle_distance(y.row(v), y.row(tri[0]), y.row(tri[1]), y.row(tri[2]));
+          ASSERT_GE(after, 0.1 * before - 1e-15);
+        }
+      for (size_t e = 0; e < sheet.edges.size(); ++e)
+        for (size_t f = e + 1; f < sheet.edges.size(); ++f) {
+          const auto &a = sheet.edges[e], &b = sheet.edges[f];
+          if (a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1]) continue;
+          const double before = segment_segment_distance(x.row(a[0]), x.row(a[1]), x.row(b[0]), x.row(b[1]));
+          const double after = segment_segment_distance(y.row(a[0]), y.row(a[1]), y.row(b[0]), y.row(b[1]));
           ASSERT_GE(after, 0.1 * before - 1e-15);
         }
     }
