@@ -1,6 +1,10 @@
 // Drape benchmark: the skirt sample at several sizes, each solver preset against a reference
 // drape solved at a tight tolerance. Prints a table (median of --runs runs) and writes a CSV
 // for plot_drape.gp. Not a test: timings depend on the machine.
+//
+// Two starts: "cold", from the sample's sewn placement (the folds form from nothing), and
+// "warm", the pipeline's case: the patterns change a little (here they widen by --ease, as when
+// update-patterns adds ease) and the garment re-drapes from the previous equilibrium.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -31,28 +35,33 @@ int main(int argc, char** argv) {
   std::vector<int> sizes{5000, 10000, 20000, 54000};
   int runs = 3;
   std::string body_path = "samples/bodies/mean_all.obj", csv_path = "bench/drape_bench.csv";
+  std::string warm_csv_path = "bench/drape_bench_warm.csv";
+  std::vector<std::string> starts{"cold", "warm"};
+  double ease = 0.02;
   app.add_option("--sizes", sizes, "target triangle counts")->delimiter(',');
   app.add_option("--runs", runs, "runs per preset (the median is reported)")->check(CLI::PositiveNumber);
   app.add_option("--body", body_path, "body mesh");
-  app.add_option("--csv", csv_path, "CSV to write");
+  app.add_option("--csv", csv_path, "CSV to write (cold starts)");
+  app.add_option("--warm-csv", warm_csv_path, "CSV to write (warm starts)");
+  app.add_option("--starts", starts, "cold (from the sewn placement), warm (re-drape after the patterns widen)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"cold", "warm"}));
+  app.add_option("--ease", ease, "warm start: relative widening of every pattern (pattern x)")->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);
 
   const TriangleMesh body = read_body_mesh(body_path);
-  std::ofstream csv(csv_path);
-  csv << "triangles,preset,median_s,newton_iterations,factorizations,factorization_share,residual,mean_error_mm,max_error_mm,converged\n";
-  std::printf("%9s %-9s %10s %7s %8s %8s %9s %10s %10s\n", "triangles", "preset", "median [s]", "Newton", "factor.", "factor.%",
-              "residual", "mean [mm]", "max [mm]");
-  for (int size : sizes) {
-    SampleParams params;
-    params.triangles = size;
-    SampleScene sample = make_sample("skirt", params, &body.V);
-    sample.scene.body = BodySettings{"body"};
-    const std::vector<int> pinned = pinned_vertices(sample.scene, sample.garment.V);
-    const ClothModel model = cloth_model(sample.garment, sample.scene, &body, pinned);
-    DrapeSettings reference_settings;
-    reference_settings.tolerance = 1e-9;
-    reference_settings.max_steps = 20000;
-    const DrapeResult reference = solve_drape(model, sample.garment.V, reference_settings);
+  const bool cold = std::find(starts.begin(), starts.end(), "cold") != starts.end();
+  const bool warm = std::find(starts.begin(), starts.end(), "warm") != starts.end();
+  const char* header = "triangles,preset,median_s,newton_iterations,factorizations,factorization_share,residual,mean_error_mm,max_error_mm,converged\n";
+  std::ofstream csv, warm_csv;
+  if (cold) (csv.open(csv_path), csv << header);
+  if (warm) (warm_csv.open(warm_csv_path), warm_csv << header);
+  const auto table_header = [](const char* title) {
+    std::printf("%s\n%9s %-9s %10s %7s %8s %8s %9s %10s %10s\n", title, "triangles", "preset", "median [s]", "Newton", "factor.",
+                "factor.%", "residual", "mean [mm]", "max [mm]");
+  };
+  // Both presets from `start`, each timed `runs` times, against `reference`.
+  const auto time_presets = [&](const ClothModel& model, const MatrixX3d& start, const DrapeResult& reference, std::ofstream& out) {
     for (const SolverPreset preset : {SolverPreset::Accurate, SolverPreset::Fast}) {
       DrapeSettings settings;
       settings.preset = preset;
@@ -60,7 +69,7 @@ int main(int argc, char** argv) {
       std::vector<double> seconds;
       DrapeResult result;
       for (int r = 0; r < runs; ++r) {
-        result = solve_drape(model, sample.garment.V, settings);
+        result = solve_drape(model, start, settings);
         seconds.push_back(result.stats.seconds_total);
       }
       const VectorXd distance = (result.V - reference.V).rowwise().norm();
@@ -70,12 +79,38 @@ int main(int argc, char** argv) {
                   to_string(preset), median(seconds), s.newton_iterations, s.factorizations, 100 * share, s.residual,
                   1000 * distance.mean(), 1000 * distance.maxCoeff(), s.converged ? "" : "  (not converged)");
       std::fflush(stdout);
-      csv << model.triangles.size() << ',' << to_string(preset) << ',' << median(seconds) << ',' << s.newton_iterations << ','
+      out << model.triangles.size() << ',' << to_string(preset) << ',' << median(seconds) << ',' << s.newton_iterations << ','
           << s.factorizations << ',' << share << ',' << s.residual << ',' << 1000 * distance.mean() << ','
           << 1000 * distance.maxCoeff() << ',' << (s.converged ? 1 : 0) << '\n';
     }
     std::printf("%9s reference: %d Newton iterations, residual %.2e%s\n", "", reference.stats.newton_iterations,
                 reference.stats.residual, reference.stats.converged ? "" : " (not converged)");
+  };
+  DrapeSettings reference_settings;
+  reference_settings.tolerance = 1e-9;
+  reference_settings.max_steps = 20000;
+  for (int size : sizes) {
+    SampleParams params;
+    params.triangles = size;
+    SampleScene sample = make_sample("skirt", params, &body.V);
+    sample.scene.body = BodySettings{"body"};
+    const std::vector<int> pinned = pinned_vertices(sample.scene, sample.garment.V);
+    const ClothModel model = cloth_model(sample.garment, sample.scene, &body, pinned);
+    const DrapeResult reference = solve_drape(model, sample.garment.V, reference_settings);
+    if (cold) {
+      table_header("cold start: from the sewn placement");
+      time_presets(model, sample.garment.V, reference, csv);
+    }
+    if (warm) {
+      Garment wider = sample.garment;
+      wider.P.col(0) *= 1.0 + ease;
+      const ClothModel wider_model = cloth_model(wider, sample.scene, &body, pinned);
+      const DrapeResult wider_reference = solve_drape(wider_model, reference.V, reference_settings);
+      char title[160];
+      std::snprintf(title, sizeof title, "warm start: patterns %.0f %% wider, from the previous drape (the cold reference)", 100 * ease);
+      table_header(title);
+      time_presets(wider_model, reference.V, wider_reference, warm_csv);
+    }
   }
   return 0;
 }
