@@ -74,6 +74,21 @@ double max_penetration(const ClothModel& model, const MatrixX3d& x) {
   return deepest;
 }
 
+double min_self_distance(const ClothModel& model, const MatrixX3d& x) {
+  if (!model.self_contact) return std::numeric_limits<double>::quiet_NaN();
+  const SelfContactModel& sc = *model.self_contact;
+  double closest = sc.thickness;
+  for (const auto& [v, t] : self_contact_pairs(sc, x, sc.thickness)) {
+    const auto& tri = sc.triangles[static_cast<size_t>(t)];
+    closest = std::min(closest, point_triangle_distance(x.row(v), x.row(tri[0]), x.row(tri[1]), x.row(tri[2])));
+  }
+  for (const auto& [e, f] : self_contact_edge_pairs(sc, x, sc.thickness)) {
+    const auto &a = sc.edges[static_cast<size_t>(e)], &b = sc.edges[static_cast<size_t>(f)];
+    closest = std::min(closest, segment_segment_distance(x.row(a[0]), x.row(a[1]), x.row(b[0]), x.row(b[1])));
+  }
+  return closest;
+}
+
 double stopping_tolerance(const DrapeSettings& settings) {
   return settings.tolerance * (settings.preset == SolverPreset::Fast ? settings.fast_tolerance_factor : 1.0);
 }
@@ -315,6 +330,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   result.V = std::move(x);
   stats.max_strain = max_strain(model, result.V);
   stats.max_penetration = max_penetration(model, result.V);
+  stats.min_self_distance = min_self_distance(model, result.V);
   report();
   return result;
 }

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <string>
 
 #include "sim/cloth_energy.h"
@@ -75,6 +76,9 @@ struct DrapeStats {
   double kinetic_energy = 0;        // [J]
   double max_strain = 0;            // largest principal stretch minus 1
   double max_penetration = 0;       // deepest vertex inside the body surface [m]
+  // Closest approach of two cloth elements that self-contact keeps apart (vertex-triangle or
+  // edge-edge) [m]; the contact thickness when none is closer, NaN without self-contact.
+  double min_self_distance = std::numeric_limits<double>::quiet_NaN();
   double step_fraction = 0;         // line-search fraction of the last Newton step
   double step_length = 0;           // largest vertex move of the last step [m]
   double damping = 0;               // 1/h^2 of the last quasi-static step [1/s^2]
@@ -95,5 +99,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
 double max_strain(const ClothModel& model, const MatrixX3d& x);
 // Deepest vertex inside the body surface [m] (0 when none, or no body).
 double max_penetration(const ClothModel& model, const MatrixX3d& x);
+// Closest approach of two cloth elements under self-contact [m] (see DrapeStats).
+double min_self_distance(const ClothModel& model, const MatrixX3d& x);
 
 } // namespace foldsketch

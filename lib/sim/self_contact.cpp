@@ -56,6 +56,14 @@ Hyper3 cross(const Hyper3& a, const Hyper3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
+// Squared distance from point (corner i) to the line through corners j, k.
+Hyper point_line_squared(const Vec12& q, int i, int j, int k) {
+  const Hyper3 xj = corner(q, j);
+  const Hyper3 e = minus(corner(q, k), xj);
+  const Hyper3 r = cross(minus(corner(q, i), xj), e);
+  return dot(r, r) * reciprocal(dot(e, e));
+}
+
 // Squared distance from p (corner 0) to the given feature of triangle (corners 1, 2, 3):
 // each formula is smooth inside its feature's region, and they agree to first order where
 // regions meet.
@@ -67,23 +75,9 @@ Hyper squared_distance(const Vec12& q, int feature) {
     const Hyper h = dot(minus(p, a), n);
     return h * h * reciprocal(dot(n, n));
   }
-  if (feature <= 3) {  // edge i -> j: |(p - xi) x e|^2 / |e|^2
-    const int i = feature, j = feature % 3 + 1;
-    const Hyper3 xi = corner(q, i);
-    const Hyper3 e = minus(corner(q, j), xi);
-    const Hyper3 r = cross(minus(p, xi), e);
-    return dot(r, r) * reciprocal(dot(e, e));
-  }
-  const Hyper3 r = minus(p, corner(q, feature - 3));  // corner
+  if (feature <= 3) return point_line_squared(q, 0, feature, feature % 3 + 1);  // edge
+  const Hyper3 r = minus(p, corner(q, feature - 3));                            // corner
   return dot(r, r);
-}
-
-// Squared distance from point (corner i) to the line through corners j, k.
-Hyper point_line_squared(const Vec12& q, int i, int j, int k) {
-  const Hyper3 xj = corner(q, j);
-  const Hyper3 e = minus(corner(q, k), xj);
-  const Hyper3 r = cross(minus(corner(q, i), xj), e);
-  return dot(r, r) * reciprocal(dot(e, e));
 }
 
 // Uniform grid of boxes, for the broad phase: items are listed in every cell their box
@@ -92,6 +86,7 @@ class CellGrid {
 public:
   explicit CellGrid(double cell) : cell_(cell) {}
   void insert(const Eigen::AlignedBox3d& box, int item) {
+    if (!box.min().allFinite() || !box.max().allFinite()) return;  // a NaN state: its energy is NaN anyway
     const Eigen::Vector3i lo = index(box.min()), hi = index(box.max());
     for (int i = lo.x(); i <= hi.x(); ++i)
       for (int j = lo.y(); j <= hi.y(); ++j)
@@ -101,6 +96,7 @@ public:
   // Calls f(item) for every item listed in a cell touching `box` (an item may come repeatedly).
   template <typename F>
   void query(const Eigen::AlignedBox3d& box, F f) const {
+    if (!box.min().allFinite() || !box.max().allFinite()) return;
     const Eigen::Vector3i lo = index(box.min()), hi = index(box.max());
     for (int i = lo.x(); i <= hi.x(); ++i)
       for (int j = lo.y(); j <= hi.y(); ++j)
@@ -188,8 +184,8 @@ TriangleClosestPoint closest_point_on_triangle(const Vector3d& p, const Vector3d
         best_distance = dist;
         best.weights.setZero();
         best.weights(e) = 1 - t;
-        best.weights((e + 1) % 3) = t;
-        best.feature = e + 1;
+        best.weights((e + 1) % 3) += t;
+        best.feature = d.squaredNorm() > 0.0 ? e + 1 : 4 + e;  // a zero-length edge is a corner
       }
     }
     return best;

@@ -25,7 +25,7 @@ TEST(DrapeFree, ConvergesWithExactPinsAndReportsInJson) {
   const auto r = test::run(test::tool_path("drape-free") + " --json " + folder + "/scene.xml -o " + out);
   ASSERT_EQ(r.status, 0) << r.err << r.out;
   const auto check = test::run("/usr/bin/python3 -c \"import json,sys; d=json.loads(sys.argv[1]); "
-                               "assert d['converged'] and d['residual'] <= 1e-6 and d['factorizations'] > 0, d\" '" + r.out + "'");
+                               "assert d['converged'] and d['residual'] <= 1e-6 and d['factorizations'] > 0 and 'min_self_distance_m' not in d, d\" '" + r.out + "'");
   EXPECT_EQ(check.status, 0) << check.err;
   const Garment before = read_garment(folder + "/garment.obj"), after = read_garment(out);
   EXPECT_EQ(after.P, before.P);  // the patterns travel unchanged
@@ -81,6 +81,7 @@ TEST(DrapeFree, SelfContactIsASceneSwitch) {
   const auto r = test::run(test::tool_path("drape-free") + " --json " + folder + "/self.xml -o " + folder + "/self.obj");
   ASSERT_EQ(r.status, 0) << r.err << r.out;
   EXPECT_NE(r.out.find("\"self_contact\":"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"min_self_distance_m\":"), std::string::npos) << r.out;
   EXPECT_TRUE(std::filesystem::exists(folder + "/self.obj"));
 }
 

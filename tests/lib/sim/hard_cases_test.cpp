@@ -161,8 +161,9 @@ TEST(HardCases, PleatPressedFlatKeepsItsLayersApart) {
   const DrapeResult r = solve_drape(model, g.V, settings);
   expect_converged_and_finite(r);
   EXPECT_GT(r.stats.energy.self_contact, 0.0);
-  // Every vertex at least half the thickness from every element not next to it.
+  // Every vertex and edge at least half the thickness from every element not next to it.
   EXPECT_TRUE(self_contact_pairs(*model.self_contact, r.V, 0.5 * params.self_contact_thickness).empty());
+  EXPECT_GT(r.stats.min_self_distance, 0.5 * params.self_contact_thickness);
   // The strip settled: on average its vertices dropped.
   EXPECT_LT(r.V.col(1).mean(), g.V.col(1).mean() - 0.001);
   // Without self-contact the same strip falls through the floor and through itself.
