@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
   std::string warm_csv_path = "bench/drape_bench_warm.csv";
   std::vector<std::string> starts{"cold", "warm"};
   double ease = 0.02;
+  bool trace = false;
   app.add_option("--sizes", sizes, "target triangle counts")->delimiter(',');
   app.add_option("--runs", runs, "runs per preset (the median is reported)")->check(CLI::PositiveNumber);
   app.add_option("--body", body_path, "body mesh");
@@ -47,7 +48,12 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->check(CLI::IsMember({"cold", "warm"}));
   app.add_option("--ease", ease, "warm start: relative widening of every pattern (pattern x)")->check(CLI::PositiveNumber);
+  app.add_flag("--trace", trace, "print every Newton iteration of the timed solves on stderr (residual, step, damping)");
   CLI11_PARSE(app, argc, argv);
+  const DrapeProgress tracer = [](const DrapeStats& s) {
+    std::fprintf(stderr, "%5d residual %.3e step %.3f length %.2e damping %.1e\n", s.newton_iterations, s.residual, s.step_fraction,
+                 s.step_length, s.damping);
+  };
 
   const TriangleMesh body = read_body_mesh(body_path);
   const bool cold = std::find(starts.begin(), starts.end(), "cold") != starts.end();
@@ -69,7 +75,7 @@ int main(int argc, char** argv) {
       std::vector<double> seconds;
       DrapeResult result;
       for (int r = 0; r < runs; ++r) {
-        result = solve_drape(model, start, settings);
+        result = solve_drape(model, start, settings, trace ? tracer : DrapeProgress{});
         seconds.push_back(result.stats.seconds_total);
       }
       const VectorXd distance = (result.V - reference.V).rowwise().norm();
