@@ -61,26 +61,28 @@ Material read_material(const XMLElement& e, const std::string& path) {
   return m;
 }
 
-PinSelector read_pin(const XMLElement& e, const std::string& path) {
+// <pin> or <self-contact>: a box and/or 1-based vertex numbers.
+VertexSelector read_selector(const XMLElement& e, const std::string& path) {
+  const std::string tag = e.Name();
   check_attributes(e, path, {"box", "vertices"});
-  PinSelector pin;
+  VertexSelector selector;
   if (e.Attribute("box")) {
     const std::vector<double> b = numbers(e, "box", path);
     if (b.size() != 6 || b[0] > b[3] || b[1] > b[4] || b[2] > b[5])
-      throw InputError(path, e.GetLineNum(), "<pin box> needs 'xmin ymin zmin xmax ymax zmax' with min <= max [m]");
-    pin.box = Eigen::AlignedBox3d(Vector3d(b[0], b[1], b[2]), Vector3d(b[3], b[4], b[5]));
+      throw InputError(path, e.GetLineNum(), "<" + tag + " box> needs 'xmin ymin zmin xmax ymax zmax' with min <= max [m]");
+    selector.box = Eigen::AlignedBox3d(Vector3d(b[0], b[1], b[2]), Vector3d(b[3], b[4], b[5]));
   }
   if (e.Attribute("vertices")) {
     std::istringstream words(e.Attribute("vertices"));
     for (std::string w; words >> w;) {
       const auto i = parse_integer(w);
       if (!i || *i < 1 || *i > (1LL << 30))
-        throw InputError(path, e.GetLineNum(), "<pin vertices>: expected 1-based drape vertex numbers, found '" + w + "'");
-      pin.vertices.push_back(static_cast<int>(*i) - 1);
+        throw InputError(path, e.GetLineNum(), "<" + tag + " vertices>: expected 1-based drape vertex numbers, found '" + w + "'");
+      selector.vertices.push_back(static_cast<int>(*i) - 1);
     }
   }
-  if (!pin.box && pin.vertices.empty()) throw InputError(path, e.GetLineNum(), "<pin> needs a box or vertices attribute");
-  return pin;
+  if (!selector.box && selector.vertices.empty()) throw InputError(path, e.GetLineNum(), "<" + tag + "> needs a box or vertices attribute");
+  return selector;
 }
 
 SimulatorSettings read_simulator(const XMLElement& e, const std::string& path) {
@@ -123,6 +125,7 @@ Scene read_scene_xml(const std::string& path) {
   Scene scene;
   scene.name = root->Attribute("name") ? root->Attribute("name") : std::filesystem::path(path).parent_path().filename().string();
   bool have_material = false;
+  int first_region_line = 0;
   for (const XMLElement* e = root->FirstChildElement(); e; e = e->NextSiblingElement()) {
     const std::string tag = e->Name();
     if (tag == "garment") {
@@ -151,16 +154,21 @@ Scene read_scene_xml(const std::string& path) {
       p.friction = bool_attribute(*e, "friction", path, p.friction);
       p.hemline = bool_attribute(*e, "hemline", path, p.hemline);
     } else if (tag == "pin") {
-      scene.pins.push_back(read_pin(*e, path));
+      scene.pins.push_back(read_selector(*e, path));
+    } else if (tag == "self-contact") {
+      if (scene.self_contact_regions.empty()) first_region_line = e->GetLineNum();
+      scene.self_contact_regions.push_back(read_selector(*e, path));
     } else if (tag == "simulator") {
       scene.simulator = read_simulator(*e, path);
     } else {
       throw InputError(path, e->GetLineNum(),
-                       "unknown element <" + tag + "> (known: garment, body, material, gravity, physics, pin, simulator)");
+                       "unknown element <" + tag + "> (known: garment, body, material, gravity, physics, pin, self-contact, simulator)");
     }
   }
   if (scene.garment_file.empty()) throw InputError(path, root->GetLineNum(), "the scene names no <garment file=...>");
   if (!have_material) throw InputError(path, root->GetLineNum(), "the scene names no <material>");
+  if (!scene.self_contact_regions.empty() && !scene.physics.self_contact)
+    throw InputError(path, first_region_line, "<self-contact> gives a region but self-contact is off (<physics self-contact=\"true\"/>)");
   if (!scene.body && (scene.physics.body_contact || scene.physics.friction))
     throw InputError(path, root->GetLineNum(), "body contact is on but the scene names no <body file=...>");
   return scene;
@@ -185,20 +193,24 @@ std::string scene_xml_text(const Scene& s) {
   t += "  <gravity x=\"" + format_double(s.gravity.x()) + "\" y=\"" + format_double(s.gravity.y()) + "\" z=\"" + format_double(s.gravity.z()) + "\"/>\n";
   t += std::string("  <physics body-contact=\"") + b(s.physics.body_contact) + "\" self-contact=\"" + b(s.physics.self_contact) +
        "\" friction=\"" + b(s.physics.friction) + "\" hemline=\"" + b(s.physics.hemline) + "\"/>\n";
-  for (const PinSelector& p : s.pins) {
-    t += "  <pin";
-    if (p.box) {
-      const Vector3d lo = p.box->min(), hi = p.box->max();
-      t += " box=\"" + format_double(lo.x()) + ' ' + format_double(lo.y()) + ' ' + format_double(lo.z()) + ' ' +
-           format_double(hi.x()) + ' ' + format_double(hi.y()) + ' ' + format_double(hi.z()) + "\"";
+  const auto selectors = [&](const std::vector<VertexSelector>& list, const char* tag) {
+    for (const VertexSelector& p : list) {
+      t += std::string("  <") + tag;
+      if (p.box) {
+        const Vector3d lo = p.box->min(), hi = p.box->max();
+        t += " box=\"" + format_double(lo.x()) + ' ' + format_double(lo.y()) + ' ' + format_double(lo.z()) + ' ' +
+             format_double(hi.x()) + ' ' + format_double(hi.y()) + ' ' + format_double(hi.z()) + "\"";
+      }
+      if (!p.vertices.empty()) {
+        t += " vertices=\"";
+        for (size_t i = 0; i < p.vertices.size(); ++i) t += (i ? " " : "") + std::to_string(p.vertices[i] + 1);
+        t += "\"";
+      }
+      t += "/>\n";
     }
-    if (!p.vertices.empty()) {
-      t += " vertices=\"";
-      for (size_t i = 0; i < p.vertices.size(); ++i) t += (i ? " " : "") + std::to_string(p.vertices[i] + 1);
-      t += "\"";
-    }
-    t += "/>\n";
-  }
+  };
+  selectors(s.pins, "pin");
+  selectors(s.self_contact_regions, "self-contact");
   const SimulatorSettings& sim = s.simulator;
   t += std::string("  <simulator mode=\"") + to_string(sim.mode) + "\" preset=\"" + to_string(sim.preset) + "\" time-step=\"" +
        format_double(sim.time_step) + "\" max-steps=\"" + std::to_string(sim.max_steps) + "\" tolerance=\"" +

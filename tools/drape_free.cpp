@@ -19,27 +19,30 @@ HessianKind hessian_kind(const std::string& name) {
   return name == "exact" ? HessianKind::Exact : name == "projected" ? HessianKind::Projected : HessianKind::GaussNewton;
 }
 
-// "; closest cloth-cloth approach 0.812 mm" under self-contact, else nothing.
-std::string self_contact_text(const DrapeStats& s) {
+// "; closest cloth-cloth approach 0.812 mm (self-contact on 1200 vertices)" under
+// self-contact, else nothing.
+std::string self_contact_text(const DrapeStats& s, int self_vertices) {
   if (std::isnan(s.min_self_distance)) return "";
-  char text[80];
-  std::snprintf(text, sizeof text, "; closest cloth-cloth approach %.3f mm", 1000 * s.min_self_distance);
+  char text[120];
+  std::snprintf(text, sizeof text, "; closest cloth-cloth approach %.3f mm (self-contact on %d vertices)", 1000 * s.min_self_distance,
+                self_vertices);
   return text;
 }
 
-std::string human(const DrapeStats& s, double tolerance) {
+// self_vertices: drape vertices under self-contact, -1 without it.
+std::string human(const DrapeStats& s, double tolerance, int self_vertices) {
   char line[1024];
   std::snprintf(line, sizeof line,
                 "drape-free: %s: %d steps, %d Newton iterations, %d factorisations; relative force residual %.2e "
                 "(tolerance %.0e, 2-norm over free vertices / weight); max strain %.3f %%; deepest body penetration "
                 "%.3f mm%s\ndrape-free: time %.2f s (assembly %.2f, factorisation %.2f, solve %.2f, line search %.2f)\n",
                 s.message.c_str(), s.steps, s.newton_iterations, s.factorizations, s.residual, tolerance, 100 * s.max_strain,
-                1000 * s.max_penetration, self_contact_text(s).c_str(), s.seconds_total, s.seconds_assembly, s.seconds_factorization,
+                1000 * s.max_penetration, self_contact_text(s, self_vertices).c_str(), s.seconds_total, s.seconds_assembly, s.seconds_factorization,
                 s.seconds_solve, s.seconds_line_search);
   return line;
 }
 
-std::string json(const DrapeStats& s, double tolerance, const std::string& output, bool written) {
+std::string json(const DrapeStats& s, double tolerance, const std::string& output, bool written, int self_vertices) {
   JsonWriter j;
   j.begin_object().key("converged").value(s.converged).key("message").value(s.message);
   j.key("output").value(written ? output : "").key("steps").value(s.steps).key("newton_iterations").value(s.newton_iterations);
@@ -49,6 +52,7 @@ std::string json(const DrapeStats& s, double tolerance, const std::string& outpu
   j.key("self_contact").value(s.energy.self_contact).end_object();
   j.key("max_strain").value(s.max_strain).key("max_penetration_m").value(s.max_penetration);
   if (!std::isnan(s.min_self_distance)) j.key("min_self_distance_m").value(s.min_self_distance);
+  if (self_vertices >= 0) j.key("self_contact_vertices").value(self_vertices);
   j.key("time_s").begin_object().key("assembly").value(s.seconds_assembly).key("factorization").value(s.seconds_factorization);
   j.key("solve").value(s.seconds_solve).key("line_search").value(s.seconds_line_search).key("total").value(s.seconds_total).end_object();
   j.end_object();
@@ -132,7 +136,9 @@ int main(int argc, char** argv) {
       garment.V = result.V;
       write_garment(garment, output);
     }
-    std::cout << (as_json ? json(result.stats, effective_tolerance, output, write) : human(result.stats, effective_tolerance));
+    const int self_vertices = model.self_contact ? static_cast<int>(model.self_contact->vertices.size()) : -1;
+    std::cout << (as_json ? json(result.stats, effective_tolerance, output, write, self_vertices)
+                          : human(result.stats, effective_tolerance, self_vertices));
     if (!result.stats.converged)
       throw std::runtime_error(std::string("did not converge (") + result.stats.message + ")" +
                                (write ? "; wrote the unconverged drape as asked" : "; nothing written"));

@@ -42,8 +42,8 @@ Garment mesh_panels(const std::vector<GridPanel>& panels, const SampleParams& pa
   return isotropic_garment(panels, spacing, kWeldTolerance);
 }
 
-PinSelector pin_box(const Vector3d& lo, const Vector3d& hi) {
-  PinSelector s;
+VertexSelector pin_box(const Vector3d& lo, const Vector3d& hi) {
+  VertexSelector s;
   s.box = Eigen::AlignedBox3d(lo - Vector3d::Constant(kPinSlack), hi + Vector3d::Constant(kPinSlack));
   return s;
 }

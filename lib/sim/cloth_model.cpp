@@ -9,14 +9,17 @@
 
 namespace foldsketch {
 
-std::vector<int> pinned_vertices(const Scene& scene, const MatrixX3d& V) {
+namespace {
+// what: "a pin", "a self-contact region", for the message.
+std::vector<int> selected_vertices(const std::vector<VertexSelector>& selectors, const MatrixX3d& V, const char* what) {
   std::vector<int> out;
-  for (const PinSelector& p : scene.pins) {
+  for (const VertexSelector& p : selectors) {
     if (p.box)
       for (int v : vertices_in_box(V, *p.box)) out.push_back(v);
     for (int v : p.vertices) {
       if (v < 0 || v >= V.rows())
-        throw ArgumentError("a pin names drape vertex " + std::to_string(v + 1) + " but the garment has " + std::to_string(V.rows()));
+        throw ArgumentError(std::string(what) + " names drape vertex " + std::to_string(v + 1) + " but the garment has " +
+                            std::to_string(V.rows()));
       out.push_back(v);
     }
   }
@@ -24,17 +27,26 @@ std::vector<int> pinned_vertices(const Scene& scene, const MatrixX3d& V) {
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
+} // namespace
+
+std::vector<int> pinned_vertices(const Scene& scene, const MatrixX3d& V) { return selected_vertices(scene.pins, V, "a pin"); }
+
+std::vector<int> self_contact_region(const Scene& scene, const MatrixX3d& V) {
+  return selected_vertices(scene.self_contact_regions, V, "a self-contact region");
+}
 
 namespace {
 
 // Who takes part in self-contact, and which pairs are never pushed apart: a vertex and the
 // triangles around it, and across a seam the triangles around the vertices stitched to it.
-SelfContactModel self_contact_model(const ClothModel& m, const ClothParams& params) {
+SelfContactModel self_contact_model(const ClothModel& m, const ClothParams& params, const std::vector<int>& region) {
   SelfContactModel sc;
   sc.thickness = params.self_contact_thickness;
   sc.stiffness = params.self_contact_stiffness;
-  std::vector<char> taking_part(static_cast<size_t>(m.vertex_count), params.self_contact_vertices.empty() ? 1 : 0);
-  for (int v : params.self_contact_vertices) {
+  std::vector<int> chosen = params.self_contact_vertices;
+  chosen.insert(chosen.end(), region.begin(), region.end());
+  std::vector<char> taking_part(static_cast<size_t>(m.vertex_count), chosen.empty() ? 1 : 0);
+  for (int v : chosen) {
     if (v < 0 || v >= m.vertex_count) throw ArgumentError("cloth_model: self-contact vertex " + std::to_string(v) + " does not exist");
     taking_part[static_cast<size_t>(v)] = 1;
   }
@@ -119,7 +131,7 @@ ClothModel cloth_model(const Garment& g, const Scene& scene, const TriangleMesh*
     m.contact_thickness = scene.body ? scene.body->thickness : 0.0;
     m.contact_stiffness = params.contact_stiffness;
   }
-  if (scene.physics.self_contact) m.self_contact = self_contact_model(m, params);
+  if (scene.physics.self_contact) m.self_contact = self_contact_model(m, params, self_contact_region(scene, g.V));
   return m;
 }
 

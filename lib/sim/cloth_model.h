@@ -37,7 +37,8 @@ struct ClothParams {
   // Stiffness [N/m^3]: the body contact's, for the same reason (a layer of cotton sinks 1.5 um).
   double self_contact_thickness = 0.001;
   double self_contact_stiffness = 1e6;
-  // Drape vertices that take part ("near the pleats"); empty: all of them.
+  // Drape vertices that take part ("near the pleats"), with those of the scene's
+  // self-contact regions; both empty: all of them.
   std::vector<int> self_contact_vertices;
 };
 
@@ -77,7 +78,12 @@ struct ClothModel {
 ClothModel cloth_model(const Garment& g, const Scene& scene, const TriangleMesh* body, const std::vector<int>& pinned,
                        const ClothParams& params = {});
 
-// Drape vertices selected by the scene's pins, for garment drape V.
+// Drape vertices selected by the scene's pins, for garment drape V (sorted, unique). Throws
+// ArgumentError when a pin names a vertex V does not have.
 std::vector<int> pinned_vertices(const Scene& scene, const MatrixX3d& V);
+
+// Drape vertices in the scene's self-contact regions, for garment drape V (sorted, unique;
+// empty when the scene names none, meaning everywhere).
+std::vector<int> self_contact_region(const Scene& scene, const MatrixX3d& V);
 
 } // namespace foldsketch

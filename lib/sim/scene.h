@@ -13,8 +13,9 @@
 
 namespace foldsketch {
 
-// Drape vertices to pin: those inside a box, and/or listed (0-based here, 1-based in files).
-struct PinSelector {
+// Drape vertices (to pin, or where self-contact acts): those inside a box, and/or listed
+// (0-based here, 1-based in files).
+struct VertexSelector {
   std::optional<Eigen::AlignedBox3d> box;
   std::vector<int> vertices;
 };
@@ -50,7 +51,9 @@ struct Scene {
   Material material;
   Vector3d gravity{0.0, -9.81, 0.0};  // [m/s^2]; y up as in the bodies we ship
   PhysicsSwitches physics;
-  std::vector<PinSelector> pins;
+  std::vector<VertexSelector> pins;
+  // Where self-contact acts ("near the pleats"), when physics.self_contact; none: everywhere.
+  std::vector<VertexSelector> self_contact_regions;
   SimulatorSettings simulator;
 };
 

@@ -38,11 +38,15 @@ TEST_F(SceneXml, WrittenSceneReadsBackEqual) {
   s.material.bending = 1e-4;  // a preset with an override is written as SI values
   s.gravity = {0, 0, -9.81};
   s.physics = {false, true, false, true};
-  PinSelector box;
+  VertexSelector box;
   box.box = Eigen::AlignedBox3d(Vector3d(-1, 0.5, -1), Vector3d(1, 0.6, 1));
-  PinSelector list;
+  VertexSelector list;
   list.vertices = {0, 4};
   s.pins = {box, list};
+  VertexSelector pleat;
+  pleat.box = Eigen::AlignedBox3d(Vector3d(-0.2, 0.1, -0.3), Vector3d(0.2, 0.4, 0.3));
+  pleat.vertices = {7};
+  s.self_contact_regions = {pleat};
   s.simulator = {SimulationMode::Dynamic, SolverPreset::Fast, 0.005, 300, 1e-5};
   write_scene_xml(s, folder + "/scene.xml");
   const Scene r = read_scene_xml(folder + "/scene.xml");
@@ -60,6 +64,9 @@ TEST_F(SceneXml, WrittenSceneReadsBackEqual) {
   ASSERT_EQ(r.pins.size(), 2u);
   EXPECT_TRUE(r.pins[0].box->isApprox(*box.box));
   EXPECT_EQ(r.pins[1].vertices, list.vertices);
+  ASSERT_EQ(r.self_contact_regions.size(), 1u);
+  EXPECT_TRUE(r.self_contact_regions[0].box->isApprox(*pleat.box));
+  EXPECT_EQ(r.self_contact_regions[0].vertices, pleat.vertices);
   EXPECT_EQ(r.simulator.mode, SimulationMode::Dynamic);
   EXPECT_EQ(r.simulator.preset, SolverPreset::Fast);
   EXPECT_EQ(r.simulator.max_steps, 300);
@@ -83,7 +90,7 @@ TEST_F(SceneXml, BadScenesNameFileAndLine) {
   EXPECT_EQ(error_of("<scene>\n<garment file=\"garment.obj\"/>\n<material preset=\"silk\" density=\"-2\"/>\n</scene>"),
             path + ":3: material: density must be a positive number of kg/m^2");
   EXPECT_EQ(error_of("<scene>\n<garment file=\"garment.obj\"/>\n<material preset=\"silk\"/>\n<wind/>\n</scene>"),
-            path + ":4: unknown element <wind> (known: garment, body, material, gravity, physics, pin, simulator)");
+            path + ":4: unknown element <wind> (known: garment, body, material, gravity, physics, pin, self-contact, simulator)");
   EXPECT_EQ(error_of("<scene>\n<garment file=\"garment.obj\" scale=\"2\"/>\n</scene>"),
             path + ":2: unknown attribute 'scale' on <garment> (known: file)");
   EXPECT_EQ(error_of("<scene>\n<garment file=\"garment.obj\"/>\n<material preset=\"silk\"/>\n</scene>"),
@@ -92,6 +99,16 @@ TEST_F(SceneXml, BadScenesNameFileAndLine) {
             path + ":4: attribute body-contact of <physics>: expected true or false, found 'maybe'");
   EXPECT_EQ(error_of("<scene>\n<garment file=\"garment.obj\"/>\n<pin box=\"0 0 0 1 1\"/>\n</scene>"),
             path + ":3: <pin box> needs 'xmin ymin zmin xmax ymax zmax' with min <= max [m]");
+  // A self-contact region names the element it is on, and needs the switch.
+  EXPECT_EQ(error_of("<scene>\n<garment file=\"garment.obj\"/>\n<material preset=\"silk\"/>\n<physics body-contact=\"false\" "
+                     "self-contact=\"true\"/>\n<self-contact vertices=\"3 x\"/>\n</scene>"),
+            path + ":5: <self-contact vertices>: expected 1-based drape vertex numbers, found 'x'");
+  EXPECT_EQ(error_of("<scene>\n<garment file=\"garment.obj\"/>\n<material preset=\"silk\"/>\n<physics body-contact=\"false\"/>\n"
+                     "<self-contact box=\"0 0 0 1 1 1\"/>\n<self-contact vertices=\"1\"/>\n</scene>"),
+            path + ":5: <self-contact> gives a region but self-contact is off (<physics self-contact=\"true\"/>)");
+  EXPECT_EQ(error_of("<scene>\n<garment file=\"garment.obj\"/>\n<material preset=\"silk\"/>\n<physics body-contact=\"false\" "
+                     "self-contact=\"true\"/>\n<self-contact/>\n</scene>"),
+            path + ":5: <self-contact> needs a box or vertices attribute");
   // Broken XML: tinyxml2's line of the problem.
   const std::string broken = error_of("<scene>\n<garment file=\"garment.obj\">\n<material preset=\"silk\"/>\n</scene>\n");
   EXPECT_EQ(broken.rfind(path + ":", 0), 0u) << broken;

@@ -83,6 +83,31 @@ TEST(DrapeFree, SelfContactIsASceneSwitch) {
   EXPECT_NE(r.out.find("\"self_contact\":"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"min_self_distance_m\":"), std::string::npos) << r.out;
   EXPECT_TRUE(std::filesystem::exists(folder + "/self.obj"));
+  const Garment flag = read_garment(folder + "/garment.obj");
+  EXPECT_NE(r.out.find("\"self_contact_vertices\":" + std::to_string(flag.V.rows())), std::string::npos) << r.out;
+
+  // Restricted to a region named in the scene: the vertices in its box, here the flag's lower
+  // half (the flag hangs in y).
+  const double middle = 0.5 * (flag.V.col(1).minCoeff() + flag.V.col(1).maxCoeff());
+  const std::string region = "  <self-contact box=\"-10 -10 -10 10 " + std::to_string(middle) + " 10\"/>\n";
+  std::string restricted = scene;
+  restricted.insert(restricted.find("  <simulator"), region);
+  test::write_text(folder + "/region.xml", restricted);
+  const auto q = test::run(test::tool_path("drape-free") + " --json " + folder + "/region.xml -o " + folder + "/region.obj");
+  ASSERT_EQ(q.status, 0) << q.err << q.out;
+  const long below = (flag.V.col(1).array() <= std::stod(std::to_string(middle))).count();
+  ASSERT_GT(below, 0);
+  ASSERT_LT(below, flag.V.rows());
+  EXPECT_NE(q.out.find("\"self_contact_vertices\":" + std::to_string(below)), std::string::npos) << q.out << " expected " << below;
+
+  // A region naming a vertex the garment does not have: a clear error, nothing written.
+  std::string bad = scene;
+  bad.insert(bad.find("  <simulator"), "  <self-contact vertices=\"" + std::to_string(flag.V.rows() + 1) + "\"/>\n");
+  test::write_text(folder + "/bad.xml", bad);
+  const auto b = test::run(test::tool_path("drape-free") + " " + folder + "/bad.xml -o " + folder + "/bad.obj");
+  EXPECT_NE(b.status, 0);
+  EXPECT_NE(b.err.find("a self-contact region names drape vertex " + std::to_string(flag.V.rows() + 1)), std::string::npos) << b.err;
+  EXPECT_FALSE(std::filesystem::exists(folder + "/bad.obj"));
 }
 
 } // namespace

@@ -37,7 +37,7 @@ TEST_P(Sample, IsSoundSewnIsometricAndNearItsSize) {
   EXPECT_NEAR((stretch.array() - 1.0).abs().maxCoeff(), 0.0, 1e-6);
 
   // The scene's pins select vertices of this garment.
-  for (const PinSelector& p : s.scene.pins) EXPECT_FALSE(vertices_in_box(g.V, *p.box).empty());
+  for (const VertexSelector& p : s.scene.pins) EXPECT_FALSE(vertices_in_box(g.V, *p.box).empty());
 }
 
 INSTANTIATE_TEST_SUITE_P(AllSizes, Sample,

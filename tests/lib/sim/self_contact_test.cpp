@@ -185,6 +185,26 @@ TEST(SelfContact, SeamsAndRegions) {
   EXPECT_EQ(part.self_contact->triangles.size(), 2u);
   region.self_contact_vertices = {99};
   EXPECT_THROW(cloth_model(g, scene, nullptr, {}, region), ArgumentError);
+
+  // The same region named in the scene: a box around the first panel's lower-left cell, and a
+  // listed vertex; a box that holds no vertex adds none.
+  VertexSelector box, listed, empty;
+  box.box = Eigen::AlignedBox3d(Vector3d(-0.001, -0.001, -1), Vector3d(0.011, 0.001, 1));  // vertices 0, 1
+  listed.vertices = {3, 4};
+  empty.box = Eigen::AlignedBox3d(Vector3d(5, 5, 5), Vector3d(6, 6, 6));
+  scene.self_contact_regions = {box, listed, empty};
+  EXPECT_EQ(self_contact_region(scene, g.V), (std::vector<int>{0, 1, 3, 4}));
+  const ClothModel named = cloth_model(g, scene, nullptr, {});
+  EXPECT_EQ(named.self_contact->vertices, part.self_contact->vertices);
+  EXPECT_EQ(named.self_contact->triangles, part.self_contact->triangles);
+  listed.vertices = {99};
+  scene.self_contact_regions = {listed};
+  try {
+    cloth_model(g, scene, nullptr, {});
+    ADD_FAILURE() << "no error for a region naming a missing vertex";
+  } catch (const ArgumentError& e) {
+    EXPECT_STREQ(e.what(), "a self-contact region names drape vertex 100 but the garment has 18");
+  }
 }
 
 } // namespace
