@@ -78,24 +78,32 @@ DihedralAngle dihedral_angle(const Vector3d& x0, const Vector3d& x1, const Vecto
   hD.block<3, 3>(6, 3) = hD.block<3, 3>(3, 6).transpose();
   Mat9 hL = Mat9::Zero();
   hL.block<3, 3>(0, 0) = (Matrix3d::Identity() - a * a.transpose() / s) / L;
-  Mat9 hp = Mat9::Zero(), hq = Mat9::Zero(), hs = Mat9::Zero(), ht = Mat9::Zero();
-  hp.block<3, 3>(0, 3) = hp.block<3, 3>(3, 0) = Matrix3d::Identity();
-  hq.block<3, 3>(0, 6) = hq.block<3, 3>(6, 0) = Matrix3d::Identity();
-  hs.block<3, 3>(0, 0) = 2.0 * Matrix3d::Identity();
-  ht.block<3, 3>(3, 6) = ht.block<3, 3>(6, 3) = Matrix3d::Identity();
-  const Mat9 hx = sym_outer(gp, gq) + q * hp + p * hq - sym_outer(gs, gt) - t * hs - s * ht;
+  // The second derivatives of p = a.b, q = a.c, s = a.a, t = b.c are identity blocks:
+  // q hp + p hq - t hs - s ht added block by block.
+  Mat9 hx = sym_outer(gp, gq) - sym_outer(gs, gt);
+  const Matrix3d I = Matrix3d::Identity();
+  hx.block<3, 3>(0, 3) += q * I;
+  hx.block<3, 3>(3, 0) += q * I;
+  hx.block<3, 3>(0, 6) += p * I;
+  hx.block<3, 3>(6, 0) += p * I;
+  hx.block<3, 3>(0, 0) -= 2.0 * t * I;
+  hx.block<3, 3>(3, 6) -= s * I;
+  hx.block<3, 3>(6, 3) -= s * I;
   const Mat9 hy = -(L * hD + sym_outer(gD, gL) + D * hL);
   const double r4 = r2 * r2;
   const double txx = 2 * x * y / r4, tyy = -2 * x * y / r4, txy = (y * y - x * x) / r4;
   const Mat9 htheta = txx * gx * gx.transpose() + tyy * gy * gy.transpose() + txy * sym_outer(gx, gy) + tx * hx + ty * hy;
 
-  // H12 = T^T H9 T with T mapping corners to (a, b, c).
-  Eigen::Matrix<double, 9, 12> T = Eigen::Matrix<double, 9, 12>::Zero();
-  for (int k = 0; k < 3; ++k) {
-    T.block<3, 3>(3 * k, 0) = -Matrix3d::Identity();
-    T.block<3, 3>(3 * k, 3 * (k + 1)) = Matrix3d::Identity();
+  // H12 = T^T H9 T with T mapping corners to (a, b, c) = (x1, x2, x3) - x0: the blocks of the
+  // last three corners are H9's, and x0's row and column are minus the sums of the others.
+  for (int k = 0; k < 3; ++k)
+    for (int l = 0; l < 3; ++l) out.hessian.block<3, 3>(3 * (k + 1), 3 * (l + 1)) = htheta.block<3, 3>(3 * k, 3 * l);
+  for (int k = 1; k < 4; ++k) {
+    const Matrix3d row_sum = -(out.hessian.block<3, 3>(3 * k, 3) + out.hessian.block<3, 3>(3 * k, 6) + out.hessian.block<3, 3>(3 * k, 9));
+    out.hessian.block<3, 3>(3 * k, 0) = row_sum;
+    out.hessian.block<3, 3>(0, 3 * k) = row_sum.transpose();
   }
-  out.hessian = T.transpose() * htheta * T;
+  out.hessian.block<3, 3>(0, 0) = -(out.hessian.block<3, 3>(0, 3) + out.hessian.block<3, 3>(0, 6) + out.hessian.block<3, 3>(0, 9));
   return out;
 }
 

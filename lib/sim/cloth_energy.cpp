@@ -183,17 +183,27 @@ EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, Sparse
   // Each thread takes a contiguous share of every element loop and accumulates into its own
   // gradient and Hessian values; they are summed after, in thread order (deterministic).
   const int threads = thread_count_;
-  std::vector<VectorXd> thread_gradients(static_cast<size_t>(threads), want_gradient ? VectorXd::Zero(3 * n) : VectorXd());
-  std::vector<std::vector<double>> thread_values(static_cast<size_t>(threads),
-                                                 std::vector<double>(static_cast<size_t>(value_count), 0.0));
+  // Thread 0 accumulates straight into the outputs, the others into buffers each zeroes itself.
+  std::vector<VectorXd> thread_gradients(static_cast<size_t>(threads));
+  std::vector<std::vector<double>> thread_values(static_cast<size_t>(threads));
   std::vector<EnergyTerms> thread_terms(static_cast<size_t>(threads));
   const SelfContactModel* sc = model_.self_contact ? &*model_.self_contact : nullptr;
   const std::vector<std::array<int, 2>> self_pairs = sc ? self_contact_active_pairs(*sc, x) : std::vector<std::array<int, 2>>{};
   const std::vector<std::array<int, 2>> edge_pairs = sc ? self_contact_edge_pairs(*sc, x, sc->thickness) : std::vector<std::array<int, 2>>{};
   const auto work = [&](int me_int) {
     const auto me = static_cast<size_t>(me_int);
-    VectorXd& grad = thread_gradients[me];
-    double* values = thread_values[me].data();
+    VectorXd& grad = me == 0 && want_gradient ? *gradient : thread_gradients[me];
+    if (want_gradient) grad.setZero(3 * n);
+    double* values = nullptr;
+    if (want_hessian) {
+      if (me == 0) {
+        values = hessian->valuePtr();
+        std::fill(values, values + value_count, 0.0);
+      } else {
+        thread_values[me].assign(static_cast<size_t>(value_count), 0.0);
+        values = thread_values[me].data();
+      }
+    }
     EnergyTerms& mine = thread_terms[me];
     const auto add_gradient = [&](const int* vs, int count, const auto& g) {
       if (!want_gradient) return;
@@ -300,16 +310,25 @@ EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, Sparse
     terms.contact += t.contact;
     terms.self_contact += t.self_contact;
   }
-  if (want_gradient) {
-    gradient->setZero(3 * n);
-    for (const VectorXd& g : thread_gradients) *gradient += g;
-  }
-  if (want_hessian) {
-    double* out = hessian->valuePtr();
-    std::fill(out, out + value_count, 0.0);
-    for (const auto& v : thread_values)
-      for (long i = 0; i < value_count; ++i) out[i] += v[static_cast<size_t>(i)];
-  }
+  // Sums in thread order (deterministic), each thread over its own range of the outputs.
+  if (threads > 1 && (want_gradient || want_hessian))
+    run_in_threads(threads, [&](int me) {
+      const auto range = [&](long count) {
+        return std::pair<long, long>(count * me / threads, count * (me + 1) / threads);
+      };
+      if (want_gradient) {
+        const auto [begin, end] = range(3L * n);
+        for (int t = 1; t < threads; ++t) gradient->segment(begin, end - begin) += thread_gradients[static_cast<size_t>(t)].segment(begin, end - begin);
+      }
+      if (want_hessian) {
+        const auto [begin, end] = range(value_count);
+        double* out = hessian->valuePtr();
+        for (int t = 1; t < threads; ++t) {
+          const double* v = thread_values[static_cast<size_t>(t)].data();
+          for (long i = begin; i < end; ++i) out[i] += v[i];
+        }
+      }
+    });
   return terms;
 }
 
