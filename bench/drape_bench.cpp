@@ -37,8 +37,10 @@ int main(int argc, char** argv) {
   std::string body_path = "samples/bodies/mean_all.obj", csv_path = "bench/drape_bench.csv";
   std::string warm_csv_path = "bench/drape_bench_warm.csv";
   std::vector<std::string> starts{"cold", "warm"};
+  std::vector<std::string> presets{"accurate", "fast"};
   double ease = 0.02;
   bool trace = false;
+  double time_step = DrapeSettings{}.time_step;
   app.add_option("--sizes", sizes, "target triangle counts")->delimiter(',');
   app.add_option("--runs", runs, "runs per preset (the median is reported)")->check(CLI::PositiveNumber);
   app.add_option("--body", body_path, "body mesh");
@@ -47,12 +49,16 @@ int main(int argc, char** argv) {
   app.add_option("--starts", starts, "cold (from the sewn placement), warm (re-drape after the patterns widen)")
       ->delimiter(',')
       ->check(CLI::IsMember({"cold", "warm"}));
+  app.add_option("--presets", presets, "solver presets to time")->delimiter(',')->check(CLI::IsMember({"accurate", "fast"}));
   app.add_option("--ease", ease, "warm start: relative widening of every pattern (pattern x)")->check(CLI::PositiveNumber);
-  app.add_flag("--trace", trace, "print every Newton iteration of the timed solves on stderr (residual, step, damping)");
+  app.add_option("--time-step", time_step, "first quasi-static step [s]: the solver's damping starts at 1/h^2")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--trace", trace,
+               "print every Newton iteration of the timed solves on stderr (factorisations so far, residual, step, damping)");
   CLI11_PARSE(app, argc, argv);
   const DrapeProgress tracer = [](const DrapeStats& s) {
-    std::fprintf(stderr, "%5d residual %.3e step %.3f length %.2e damping %.1e\n", s.newton_iterations, s.residual, s.step_fraction,
-                 s.step_length, s.damping);
+    std::fprintf(stderr, "%5d factorisations %5d residual %.3e step %.3f length %.2e damping %.1e\n", s.newton_iterations,
+                 s.factorizations, s.residual, s.step_fraction, s.step_length, s.damping);
   };
 
   const TriangleMesh body = read_body_mesh(body_path);
@@ -69,9 +75,11 @@ int main(int argc, char** argv) {
   // Both presets from `start`, each timed `runs` times, against `reference`.
   const auto time_presets = [&](const ClothModel& model, const MatrixX3d& start, const DrapeResult& reference, std::ofstream& out) {
     for (const SolverPreset preset : {SolverPreset::Accurate, SolverPreset::Fast}) {
+      if (std::find(presets.begin(), presets.end(), to_string(preset)) == presets.end()) continue;
       DrapeSettings settings;
       settings.preset = preset;
       settings.max_steps = 20000;
+      settings.time_step = time_step;
       std::vector<double> seconds;
       DrapeResult result;
       for (int r = 0; r < runs; ++r) {
