@@ -7,6 +7,7 @@
 
 #include <exception>
 #include <thread>
+#include <utility>
 
 #include "core/error.h"
 #include "sim/bending.h"
@@ -21,6 +22,13 @@ constexpr size_t kElementsPerThread = 2000;
 // Self-contact pairs enter the Hessian pattern once closer than this many contact thicknesses,
 // a little ahead of contact, so the pattern (and the analysis) changes less often.
 constexpr double kPatternReach = 2.0;
+
+// Share [begin, end) of thread `me` among `threads` in a loop of `count` items: contiguous,
+// sizes differing by at most one.
+std::pair<long, long> thread_share(size_t count, int me, int threads) {
+  const auto t = static_cast<size_t>(threads), m = static_cast<size_t>(me);
+  return {static_cast<long>(count * m / t), static_cast<long>(count * (m + 1) / t)};
+}
 
 // Runs work(0), ..., work(threads - 1), work(0) on the calling thread, the others on fresh
 // threads that end when their share does. Plain threads instead of OpenMP: idle OpenMP workers
@@ -210,11 +218,7 @@ EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, Sparse
       for (int i = 0; i < count; ++i)
         if (const int a = free_index_[vs[i]]; a >= 0) grad.segment<3>(3 * a) += g.template segment<3>(3 * i);
     };
-    // This thread's share [begin, end) of a loop of `count` items.
-    const auto share = [&](size_t count) {
-      return std::pair<long, long>(static_cast<long>(count * me / static_cast<size_t>(threads)),
-                                   static_cast<long>(count * (me + 1) / static_cast<size_t>(threads)));
-    };
+    const auto share = [&](size_t count) { return thread_share(count, me_int, threads); };
     for (auto [t, end] = share(model_.triangles.size()); t < end; ++t) {
       const auto& v = model_.triangles[static_cast<size_t>(t)];
       const Element9 e = membrane_element(x.row(v[0]), x.row(v[1]), x.row(v[2]), model_.rest[static_cast<size_t>(t)],
@@ -313,15 +317,12 @@ EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, Sparse
   // Sums in thread order (deterministic), each thread over its own range of the outputs.
   if (threads > 1 && (want_gradient || want_hessian))
     run_in_threads(threads, [&](int me) {
-      const auto range = [&](long count) {
-        return std::pair<long, long>(count * me / threads, count * (me + 1) / threads);
-      };
       if (want_gradient) {
-        const auto [begin, end] = range(3L * n);
+        const auto [begin, end] = thread_share(3 * static_cast<size_t>(n), me, threads);
         for (int t = 1; t < threads; ++t) gradient->segment(begin, end - begin) += thread_gradients[static_cast<size_t>(t)].segment(begin, end - begin);
       }
       if (want_hessian) {
-        const auto [begin, end] = range(value_count);
+        const auto [begin, end] = thread_share(static_cast<size_t>(value_count), me, threads);
         double* out = hessian->valuePtr();
         for (int t = 1; t < threads; ++t) {
           const double* v = thread_values[static_cast<size_t>(t)].data();
