@@ -5,11 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include "formats/body_mesh.h"
 #include "mesh/triangle_geometry.h"
 #include "samples/grid_garment.h"
 #include "samples/sample_scenes.h"
 #include "sim/drape_solver.h"
 #include "sim/self_contact.h"
+#include "support/test_support.h"
 
 namespace foldsketch {
 namespace {
@@ -107,6 +109,27 @@ TEST(HardCases, InitialDrapeOneCentimetreInsideTheBody) {
   const DrapeResult r = solve_drape(model, sunk.V, {});
   expect_converged_and_finite(r);
   EXPECT_LE(r.stats.max_penetration, 0.0005);
+}
+
+// The 54K-triangle skirt, the size of the thesis's largest garment, draped from its sewn
+// placement around the body. The slowest test: about 5 minutes on 2 cores (bench/drape_bench.txt:
+// 319 s, 731 Newton iterations).
+TEST(HardCases, FiftyFourThousandTriangleSkirtDrapes) {
+  const TriangleMesh human = read_body_mesh(test::source_path("samples/bodies/mean_all.obj"));
+  SampleParams params;
+  params.triangles = 54000;
+  SampleScene skirt = make_sample("skirt", params, &human.V);
+  skirt.scene.body = BodySettings{"body"};
+  const std::vector<int> pinned = pinned_vertices(skirt.scene, skirt.garment.V);
+  const ClothModel model = cloth_model(skirt.garment, skirt.scene, &human, pinned);
+  ASSERT_GT(model.triangles.size(), 52000u);
+  DrapeSettings settings;
+  settings.max_steps = 5000;
+  const DrapeResult r = solve_drape(model, skirt.garment.V, settings);
+  expect_converged_and_finite(r);
+  EXPECT_LE(r.stats.residual, 1e-6);
+  EXPECT_LE(r.stats.max_penetration, 0.0005);
+  for (int v : pinned) EXPECT_EQ(r.V.row(v), skirt.garment.V.row(v)) << "pin " << v << " moved";
 }
 
 TEST(HardCases, NaNInputIsRefusedNotPropagated) {
