@@ -5,11 +5,18 @@
 // Two starts: "cold", from the sample's sewn placement (the folds form from nothing), and
 // "warm", the pipeline's case: the patterns change a little (here they widen by --ease, as when
 // update-patterns adds ease) and the garment re-drapes from the previous equilibrium.
+//
+// The iteration count of a drape depends on the path its folds take, and that changes with the
+// mesh: cold 20K-triangle skirts near one size took 389 to 914 Newton iterations. So the table
+// ends with the cost growth fitted over all sizes (least squares in log-log), and
+// --no-reference makes a sweep over many sizes affordable.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
+#include <string>
 #include <sstream>
 #include <vector>
 
@@ -26,6 +33,24 @@ double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
+
+// Least-squares slope of log(y) against log(x): the exponent p of y ~ x^p.
+double growth_exponent(const std::vector<double>& x, const std::vector<double>& y) {
+  const auto n = static_cast<double>(x.size());
+  double mx = 0, my = 0;
+  for (size_t i = 0; i < x.size(); ++i) mx += std::log(x[i]) / n, my += std::log(y[i]) / n;
+  double sxy = 0, sxx = 0;
+  for (size_t i = 0; i < x.size(); ++i) {
+    sxy += (std::log(x[i]) - mx) * (std::log(y[i]) - my);
+    sxx += (std::log(x[i]) - mx) * (std::log(x[i]) - mx);
+  }
+  return sxy / sxx;
+}
+
+struct Row {  // one timed preset at one size
+  std::string start, preset;
+  double triangles = 0, seconds = 0, iterations = 0;
+};
 } // namespace
 
 int main(int argc, char** argv) {
@@ -34,18 +59,17 @@ int main(int argc, char** argv) {
                "drape_bench"};
   std::vector<int> sizes{5000, 10000, 20000, 54000};
   int runs = 3;
-  std::string body_path = "samples/bodies/mean_all.obj", csv_path = "bench/drape_bench.csv";
-  std::string warm_csv_path = "bench/drape_bench_warm.csv";
+  std::string body_path = "samples/bodies/mean_all.obj", csv_path, warm_csv_path;
   std::vector<std::string> starts{"cold", "warm"};
   std::vector<std::string> presets{"accurate", "fast"};
   double ease = 0.02;
-  bool trace = false;
+  bool trace = false, no_reference = false;
   double time_step = DrapeSettings{}.time_step;
   app.add_option("--sizes", sizes, "target triangle counts")->delimiter(',');
   app.add_option("--runs", runs, "runs per preset (the median is reported)")->check(CLI::PositiveNumber);
   app.add_option("--body", body_path, "body mesh");
-  app.add_option("--csv", csv_path, "CSV to write (cold starts)");
-  app.add_option("--warm-csv", warm_csv_path, "CSV to write (warm starts)");
+  app.add_option("--csv", csv_path, "CSV to write (cold starts; bench/drape_bench.csv holds the committed rows)");
+  app.add_option("--warm-csv", warm_csv_path, "CSV to write (warm starts; bench/drape_bench_warm.csv)");
   app.add_option("--starts", starts, "cold (from the sewn placement), warm (re-drape after the patterns widen)")
       ->delimiter(',')
       ->check(CLI::IsMember({"cold", "warm"}));
@@ -53,6 +77,9 @@ int main(int argc, char** argv) {
   app.add_option("--ease", ease, "warm start: relative widening of every pattern (pattern x)")->check(CLI::PositiveNumber);
   app.add_option("--time-step", time_step, "first quasi-static step [s]: the solver's damping starts at 1/h^2")
       ->check(CLI::PositiveNumber);
+  app.add_flag("--no-reference", no_reference,
+               "skip the reference drapes (no error columns; a warm start then starts from the cold accurate drape): "
+               "for sweeps over many sizes");
   app.add_flag("--trace", trace,
                "print every Newton iteration of the timed solves on stderr (factorisations so far, residual, step, damping)");
   CLI11_PARSE(app, argc, argv);
@@ -66,14 +93,19 @@ int main(int argc, char** argv) {
   const bool warm = std::find(starts.begin(), starts.end(), "warm") != starts.end();
   const char* header = "triangles,preset,median_s,newton_iterations,factorizations,factorization_share,residual,mean_error_mm,max_error_mm,converged\n";
   std::ofstream csv, warm_csv;
-  if (cold) (csv.open(csv_path), csv << header);
-  if (warm) (warm_csv.open(warm_csv_path), warm_csv << header);
+  if (cold && !csv_path.empty()) (csv.open(csv_path), csv << header);
+  if (warm && !warm_csv_path.empty()) (warm_csv.open(warm_csv_path), warm_csv << header);
+  std::vector<Row> rows;
   const auto table_header = [](const char* title) {
     std::printf("%s\n%9s %-9s %10s %7s %8s %8s %9s %10s %10s\n", title, "triangles", "preset", "median [s]", "Newton", "factor.",
                 "factor.%", "residual", "mean [mm]", "max [mm]");
   };
-  // Both presets from `start`, each timed `runs` times, against `reference`.
-  const auto time_presets = [&](const ClothModel& model, const MatrixX3d& start, const DrapeResult& reference, std::ofstream& out) {
+  // Both presets from `start`, each timed `runs` times, against `reference` (none: null).
+  // Returns the last accurate drape (or the last drape).
+  const auto time_presets = [&](const char* start_name, const ClothModel& model, const MatrixX3d& start,
+                                const DrapeResult* reference, std::ofstream& out) {
+    MatrixX3d drape = start;
+    bool have_accurate = false;
     for (const SolverPreset preset : {SolverPreset::Accurate, SolverPreset::Fast}) {
       if (std::find(presets.begin(), presets.end(), to_string(preset)) == presets.end()) continue;
       DrapeSettings settings;
@@ -86,19 +118,32 @@ int main(int argc, char** argv) {
         result = solve_drape(model, start, settings, trace ? tracer : DrapeProgress{});
         seconds.push_back(result.stats.seconds_total);
       }
-      const VectorXd distance = (result.V - reference.V).rowwise().norm();
       const DrapeStats& s = result.stats;
       const double share = s.seconds_factorization / s.seconds_total;
-      std::printf("%9ld %-9s %10.2f %7d %8d %7.0f%% %9.2e %10.3f %10.3f%s\n", static_cast<long>(model.triangles.size()),
-                  to_string(preset), median(seconds), s.newton_iterations, s.factorizations, 100 * share, s.residual,
-                  1000 * distance.mean(), 1000 * distance.maxCoeff(), s.converged ? "" : "  (not converged)");
+      char mean_error[32] = "-", max_error[32] = "-";
+      if (reference) {
+        const VectorXd distance = (result.V - reference->V).rowwise().norm();
+        std::snprintf(mean_error, sizeof mean_error, "%.3f", 1000 * distance.mean());
+        std::snprintf(max_error, sizeof max_error, "%.3f", 1000 * distance.maxCoeff());
+      }
+      std::printf("%9ld %-9s %10.2f %7d %8d %7.0f%% %9.2e %10s %10s%s\n", static_cast<long>(model.triangles.size()),
+                  to_string(preset), median(seconds), s.newton_iterations, s.factorizations, 100 * share, s.residual, mean_error,
+                  max_error, s.converged ? "" : "  (not converged)");
       std::fflush(stdout);
-      out << model.triangles.size() << ',' << to_string(preset) << ',' << median(seconds) << ',' << s.newton_iterations << ','
-          << s.factorizations << ',' << share << ',' << s.residual << ',' << 1000 * distance.mean() << ','
-          << 1000 * distance.maxCoeff() << ',' << (s.converged ? 1 : 0) << '\n';
+      if (out.is_open())
+        out << model.triangles.size() << ',' << to_string(preset) << ',' << median(seconds) << ',' << s.newton_iterations << ','
+            << s.factorizations << ',' << share << ',' << s.residual << ',' << (reference ? mean_error : "") << ','
+            << (reference ? max_error : "") << ',' << (s.converged ? 1 : 0) << '\n';
+      if (s.converged)
+        rows.push_back({start_name, to_string(preset), static_cast<double>(model.triangles.size()), median(seconds),
+                        static_cast<double>(s.newton_iterations)});
+      if (preset == SolverPreset::Accurate || !have_accurate) drape = result.V;
+      have_accurate = have_accurate || preset == SolverPreset::Accurate;
     }
-    std::printf("%9s reference: %d Newton iterations, residual %.2e%s\n", "", reference.stats.newton_iterations,
-                reference.stats.residual, reference.stats.converged ? "" : " (not converged)");
+    if (reference)
+      std::printf("%9s reference: %d Newton iterations, residual %.2e%s\n", "", reference->stats.newton_iterations,
+                  reference->stats.residual, reference->stats.converged ? "" : " (not converged)");
+    return drape;
   };
   DrapeSettings reference_settings;
   reference_settings.tolerance = 1e-9;
@@ -110,21 +155,43 @@ int main(int argc, char** argv) {
     sample.scene.body = BodySettings{"body"};
     const std::vector<int> pinned = pinned_vertices(sample.scene, sample.garment.V);
     const ClothModel model = cloth_model(sample.garment, sample.scene, &body, pinned);
-    const DrapeResult reference = solve_drape(model, sample.garment.V, reference_settings);
+    std::optional<DrapeResult> reference;
+    if (!no_reference) reference = solve_drape(model, sample.garment.V, reference_settings);
+    MatrixX3d previous = reference ? reference->V : MatrixX3d();
     if (cold) {
       table_header("cold start: from the sewn placement");
-      time_presets(model, sample.garment.V, reference, csv);
+      const MatrixX3d drape = time_presets("cold", model, sample.garment.V, reference ? &*reference : nullptr, csv);
+      if (!reference) previous = drape;
     }
     if (warm) {
+      if (previous.rows() == 0) previous = solve_drape(model, sample.garment.V, DrapeSettings{}).V;
       Garment wider = sample.garment;
       wider.P.col(0) *= 1.0 + ease;
       const ClothModel wider_model = cloth_model(wider, sample.scene, &body, pinned);
-      const DrapeResult wider_reference = solve_drape(wider_model, reference.V, reference_settings);
+      std::optional<DrapeResult> wider_reference;
+      if (!no_reference) wider_reference = solve_drape(wider_model, previous, reference_settings);
       char title[160];
-      std::snprintf(title, sizeof title, "warm start: patterns %.0f %% wider, from the previous drape (the cold reference)", 100 * ease);
+      std::snprintf(title, sizeof title, "warm start: patterns %.0f %% wider, from the previous drape (the cold %s)", 100 * ease,
+                    reference ? "reference" : "accurate drape");
       table_header(title);
-      time_presets(wider_model, reference.V, wider_reference, warm_csv);
+      time_presets("warm", wider_model, previous, wider_reference ? &*wider_reference : nullptr, warm_csv);
     }
   }
+
+  // Cost growth over the sizes, per start and preset (converged rows only).
+  bool first = true;
+  for (const char* start : {"cold", "warm"})
+    for (const std::string& preset : presets) {
+      std::vector<double> n, seconds, iterations, per_iteration;
+      for (const Row& r : rows)
+        if (r.start == start && r.preset == preset)
+          n.push_back(r.triangles), seconds.push_back(r.seconds), iterations.push_back(r.iterations),
+              per_iteration.push_back(r.seconds / r.iterations);
+      if (n.size() < 2 || *std::min_element(n.begin(), n.end()) == *std::max_element(n.begin(), n.end())) continue;
+      if (first) std::printf("cost growth, least squares in log-log over the sizes (time ~ n^p)\n"), first = false;
+      std::printf("  %-4s %-9s %zu sizes: time n^%.2f, Newton iterations n^%.2f, time per iteration n^%.2f\n", start,
+                  preset.c_str(), n.size(), growth_exponent(n, seconds), growth_exponent(n, iterations),
+                  growth_exponent(n, per_iteration));
+    }
   return 0;
 }
