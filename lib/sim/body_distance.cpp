@@ -1,5 +1,8 @@
 #include "sim/body_distance.h"
 
+#include <algorithm>
+#include <iterator>
+#include <map>
 #include <vector>
 
 #include <CGAL/AABB_traits.h>
@@ -9,6 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "core/error.h"
+#include "sim/self_contact.h"
 
 namespace foldsketch {
 namespace {
@@ -17,6 +21,11 @@ using Triangle = Kernel::Triangle_3;
 using Iterator = std::vector<Triangle>::const_iterator;
 using Primitive = CGAL::AABB_triangle_primitive<Kernel, Iterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+// An edge is concave when a corner of the face across lies on the outer side of this face's
+// plane by more than this fraction of the edge length (flat edges are not concave: there the
+// closest point moves continuously).
+constexpr double kConcaveTolerance = 1e-9;
 } // namespace
 
 struct BodyDistance::Tree {
@@ -36,6 +45,39 @@ BodyDistance::BodyDistance(const TriangleMesh& body) : tree_(std::make_unique<Tr
   }
   tree_->tree.insert(tree_->triangles.cbegin(), tree_->triangles.cend());
   tree_->tree.accelerate_distance_queries();
+
+  // Edges, and which are concave: the face across lies on the outside of this face's plane.
+  vertices_ = body.V;
+  faces_ = body.F;
+  face_edges_.resize(body.F.rows(), 3);
+  std::map<std::array<int, 2>, int> edge_index;
+  std::vector<std::vector<int>> edge_faces;
+  for (int f = 0; f < body.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      std::array<int, 2> e{body.F(f, k), body.F(f, (k + 1) % 3)};
+      if (e[0] > e[1]) std::swap(e[0], e[1]);
+      const auto [it, added] = edge_index.emplace(e, static_cast<int>(edges_.size()));
+      if (added) edges_.push_back(e), edge_faces.emplace_back();
+      face_edges_(f, k) = it->second;
+      edge_faces[static_cast<size_t>(it->second)].push_back(f);
+    }
+  face_near_concave_.assign(static_cast<size_t>(body.F.rows()), 0);
+  for (size_t e = 0; e < edges_.size(); ++e) {
+    const std::vector<int>& fs = edge_faces[e];
+    if (fs.size() != 2) continue;
+    const Vector3d a = body.V.row(edges_[e][0]), b = body.V.row(edges_[e][1]);
+    const double scale = (b - a).norm();
+    bool concave = false;
+    for (int side = 0; side < 2; ++side) {
+      const int f = fs[static_cast<size_t>(side)], g = fs[static_cast<size_t>(1 - side)];
+      for (int k = 0; k < 3; ++k) {
+        const int v = body.F(g, k);
+        if (v == edges_[e][0] || v == edges_[e][1]) continue;
+        concave = concave || normals_.row(f).dot(body.V.row(v) - body.V.row(edges_[e][0])) > kConcaveTolerance * scale;
+      }
+    }
+    if (concave) face_near_concave_[static_cast<size_t>(fs[0])] = face_near_concave_[static_cast<size_t>(fs[1])] = 1;
+  }
 }
 
 BodyDistance::~BodyDistance() = default;
@@ -48,6 +90,7 @@ BodyPoint BodyDistance::at(const Vector3d& p) const {
   BodyPoint out;
   out.closest = {point.x(), point.y(), point.z()};
   out.normal = normals_.row(f);
+  out.face = f;
   const Vector3d offset = p - out.closest;
   // The closest triangle's side decides the sign. Off its interior (closest point on an edge or
   // corner) the offset direction is the better normal for the penalty force.
@@ -58,6 +101,72 @@ BodyPoint BodyDistance::at(const Vector3d& p) const {
     out.normal = out.distance >= 0 ? direction : Vector3d(-direction);
   }
   return out;
+}
+
+namespace {
+BodyFeaturePoint closest_on(const Vector3d& p, const Triangle& t) {
+  const Vector3d a(t[0].x(), t[0].y(), t[0].z()), b(t[1].x(), t[1].y(), t[1].z()), c(t[2].x(), t[2].y(), t[2].z());
+  const TriangleClosestPoint q = closest_point_on_triangle(p, a, b, c);
+  BodyFeaturePoint out;
+  out.closest = q.weights(0) * a + q.weights(1) * b + q.weights(2) * c;
+  if (q.feature >= 1 && q.feature <= 3) {
+    const Vector3d corners[3] = {a, b, c};
+    out.kind = BodyFeaturePoint::Segment;
+    out.edge = (corners[q.feature % 3] - corners[q.feature - 1]).normalized();
+  } else if (q.feature >= 4) {
+    out.kind = BodyFeaturePoint::Point;
+  }
+  return out;
+}
+} // namespace
+
+std::vector<BodyFeaturePoint> BodyDistance::contact_features(const Vector3d& p, double radius) const {
+  const CGAL::Bbox_3 box(p.x() - radius, p.y() - radius, p.z() - radius, p.x() + radius, p.y() + radius, p.z() + radius);
+  std::vector<Iterator> candidates;
+  tree_->tree.all_intersected_primitives(box, std::back_inserter(candidates));
+  std::vector<BodyFeaturePoint> out;
+  std::vector<int> near_faces;
+  bool concave = false;
+  for (const Iterator& id : candidates) {
+    const int f = static_cast<int>(id - tree_->triangles.cbegin());
+    BodyFeaturePoint term = closest_on(p, *id);
+    if (!((p - term.closest).norm() < radius)) continue;
+    concave = concave || face_near_concave_[static_cast<size_t>(f)];
+    near_faces.push_back(f);
+    out.push_back(term);
+  }
+  if (!concave) return {};
+  // Edges and corners of the faces within reach (every edge or corner within reach is one).
+  std::vector<int> edges, corners;
+  for (int f : near_faces)
+    for (int k = 0; k < 3; ++k) edges.push_back(face_edges_(f, k)), corners.push_back(faces_(f, k));
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  for (int e : edges) {
+    const Vector3d a = vertices_.row(edges_[static_cast<size_t>(e)][0]), b = vertices_.row(edges_[static_cast<size_t>(e)][1]);
+    const double s = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+    BodyFeaturePoint term;
+    term.closest = a + s * (b - a);
+    if (!((p - term.closest).norm() < radius)) continue;
+    term.weight = -1;
+    term.kind = s > 0.0 && s < 1.0 ? BodyFeaturePoint::Segment : BodyFeaturePoint::Point;
+    term.edge = (b - a).normalized();
+    out.push_back(term);
+  }
+  for (int v : corners) {
+    BodyFeaturePoint term;
+    term.closest = vertices_.row(v);
+    if (!((p - term.closest).norm() < radius)) continue;
+    term.kind = BodyFeaturePoint::Point;
+    out.push_back(term);
+  }
+  return out;
+}
+
+BodyFeaturePoint BodyDistance::on_triangle(const Vector3d& p, int f) const {
+  return closest_on(p, tree_->triangles[static_cast<size_t>(f)]);
 }
 
 } // namespace foldsketch

@@ -1,5 +1,6 @@
 // Every energy term's gradient and Hessian against central finite differences, at random
 // configurations, nearly degenerate triangles included (relative error < 1e-5).
+#include <cmath>
 #include <numbers>
 #include <random>
 #include <tuple>
@@ -204,6 +205,67 @@ TEST(Derivatives, ContactCertificatesChangeNothing) {
     for (int v = 0; v < x.rows(); ++v) x.row(v) += Vector3d(step(rng), step(rng), step(rng)).transpose();
   }
   EXPECT_GT(in_contact, 10);  // the comparison covered contact, not only free flight
+}
+
+// A body with one concave crease: two 10-degree slopes meeting along the x axis (a V trough,
+// faces up), 1 m square.
+TriangleMesh v_trough() {
+  const double rise = std::tan(10.0 * std::numbers::pi / 180.0);
+  TriangleMesh t;
+  t.V.resize(6, 3);
+  t.V << -1, rise, -1, 1, rise, -1, -1, 0, 0, 1, 0, 0, -1, rise, 1, 1, rise, 1;
+  t.F.resize(4, 3);
+  t.F << 0, 2, 1, 1, 2, 3, 2, 4, 3, 3, 4, 5;
+  return t;
+}
+
+// A vertex in the contact layer over the crease of a V trough, on its bisector, where the
+// closest body triangle changes from one slope to the other: the contact energy is C1 there
+// (one penalty on the distance to the closest triangle has a kink, and Newton stalled on it),
+// so its derivatives match central differences and its force does not jump across.
+TEST(Derivatives, BodyContactOnAConcaveCrease) {
+  const TriangleMesh trough = v_trough();
+  for (int f = 0; f < trough.F.rows(); ++f) {  // faces up
+    const Vector3d a = trough.V.row(trough.F(f, 0)), b = trough.V.row(trough.F(f, 1)), c = trough.V.row(trough.F(f, 2));
+    ASSERT_GT((b - a).cross(c - a).y(), 0.0);
+  }
+  Garment g = test::square_panel(2, 0.02);
+  for (int v = 0; v < g.V.rows(); ++v) g.V.row(v) = Vector3d(g.P(v, 0) - 0.01, 0.0015, g.P(v, 1) - 0.01);
+  Scene scene;
+  scene.material = *material_preset("cotton-thin");
+  scene.body = BodySettings{"trough", 0.003};
+  const ClothModel model = cloth_model(g, scene, &trough, {0, 1, 2, 3, 5, 6, 7, 8});
+  const ClothEnergy energy(model);
+  ASSERT_EQ(energy.free_count(), 1);
+  ASSERT_DOUBLE_EQ(g.V(4, 2), 0.0);  // the free vertex is on the bisector
+
+  const auto contact = [&](const Eigen::Vector3d& q) {
+    MatrixX3d x = g.V;
+    x.row(4) = q.transpose();
+    VectorXd grad;
+    SparseMatrix H = energy.pattern();
+    const EnergyTerms e = energy.evaluate(x, &grad, &H, HessianKind::Exact);
+    return std::make_tuple(e.total(), Eigen::Vector3d(grad), Eigen::Matrix3d(Eigen::MatrixXd(H)));
+  };
+  const Eigen::Vector3d q = g.V.row(4).transpose();
+  ASSERT_GT(std::get<0>(contact(q)), 0.0);
+  check_derivatives<3>(q, 1e-7, contact, "contact on the crease");
+  const Eigen::Vector3d left = std::get<1>(contact(q - Eigen::Vector3d(0, 0, 1e-9)));
+  const Eigen::Vector3d right = std::get<1>(contact(q + Eigen::Vector3d(0, 0, 1e-9)));
+  // A kink would make the force jump by about |force| 2 sin(10 deg); 2 nm of smooth change is
+  // about 1e-5 of it.
+  EXPECT_LT((left - right).norm(), 1e-4 * left.norm()) << left.transpose() << " | " << right.transpose();
+
+  // Off the crease (2 mm to the side, over one slope only) the faces, edge and corners summed
+  // near the crease cancel down to the one penalty on the distance to that slope's plane.
+  const double slope = 10.0 * std::numbers::pi / 180.0;
+  const Eigen::Vector3d aside(0.0, 0.0015 + 0.002 * std::tan(slope), -0.002);
+  MatrixX3d x = g.V;
+  x.row(4) = aside.transpose();
+  const double to_plane = 0.0015 * std::cos(slope);  // height above the slope, along its normal
+  const double depth = model.contact_thickness - to_plane;
+  EXPECT_NEAR(energy.evaluate(x, nullptr, nullptr, HessianKind::Exact).contact,
+              0.5 * model.contact_stiffness * model.contact_area(4) * depth * depth, 1e-12);
 }
 
 // Self-contact penalty of a vertex against a triangle, with the vertex in each of the seven
