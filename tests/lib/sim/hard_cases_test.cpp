@@ -113,9 +113,9 @@ TEST(HardCases, InitialDrapeOneCentimetreInsideTheBody) {
 
 // A sheet dropped into a V trough (two 10-degree slopes meeting in a concave crease along x;
 // nothing pins it, and nothing pushes along x): it folds into the V, and the vertices over the
-// crease settle on its bisector, where the distance to
-// the body has a kink. With one penalty on that distance Newton stalled in such a V (a
-// 14K-triangle skirt stopped at relative residual 1.3e-3); the contact is C1 there now.
+// crease settle on its bisector, where the distance to the body has a kink. With one penalty
+// on that distance Newton stalled in such a V (a 14K-triangle skirt stopped at relative
+// residual 1.3e-3); the contact is C1 there now.
 TEST(HardCases, SheetSettlesIntoAConcaveCreaseOfTheBody) {
   const double rise = std::tan(10.0 * std::numbers::pi / 180.0);
   TriangleMesh trough;
@@ -145,8 +145,9 @@ TEST(HardCases, SheetSettlesIntoAConcaveCreaseOfTheBody) {
 }
 
 // The 54K-triangle skirt, the size of the thesis's largest garment, draped from its sewn
-// placement around the body. The slowest test: about 5 minutes on 2 cores (bench/drape_bench.txt:
-// 319 s, 731 Newton iterations).
+// placement around the body. The slowest test: about 6 minutes on 2 cores beside the rest of
+// the suite (364 s in a clean-clone run; bench/drape_bench.txt: 319 s alone, before the C1
+// body contact).
 TEST(HardCases, FiftyFourThousandTriangleSkirtDrapes) {
   const TriangleMesh human = read_body_mesh(test::source_path("samples/bodies/mean_all.obj"));
   SampleParams params;
