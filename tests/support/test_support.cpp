@@ -1,5 +1,6 @@
 #include "support/test_support.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -8,6 +9,7 @@
 #include <Eigen/Geometry>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -45,6 +47,16 @@ std::string temp_folder() {
   const fsys::path folder = root.root / std::to_string(counter++);
   fsys::create_directories(folder);
   return folder.string();
+}
+
+TriangleMesh v_trough(double slope_degrees) {
+  const double rise = std::tan(slope_degrees * std::numbers::pi / 180.0);
+  TriangleMesh t;
+  t.V.resize(6, 3);
+  t.V << -1, rise, -1, 1, rise, -1, -1, 0, 0, 1, 0, 0, -1, rise, 1, 1, rise, 1;
+  t.F.resize(4, 3);
+  t.F << 0, 2, 1, 1, 2, 3, 2, 4, 3, 3, 4, 5;
+  return t;
 }
 
 Garment square_panel(int n, double size) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "garment/garment.h"
+#include "mesh/primitive_meshes.h"
 
 namespace foldsketch::test {
 
@@ -19,6 +20,10 @@ std::string temp_folder();
 
 // A square panel of n x n cells of side `size` [m]; the drape is the pattern in the z = 0 plane.
 Garment square_panel(int n, double size = 1.0);
+
+// A body with one concave crease: two slopes rising `slope_degrees` from the x axis on either
+// side (a V trough, faces up), 2 m square.
+TriangleMesh v_trough(double slope_degrees);
 
 // Two unit squares side by side, sewn along their shared edge by welding: "left" and "right".
 Garment two_sewn_squares();

@@ -207,24 +207,12 @@ TEST(Derivatives, ContactCertificatesChangeNothing) {
   EXPECT_GT(in_contact, 10);  // the comparison covered contact, not only free flight
 }
 
-// A body with one concave crease: two 10-degree slopes meeting along the x axis (a V trough,
-// faces up), 1 m square.
-TriangleMesh v_trough() {
-  const double rise = std::tan(10.0 * std::numbers::pi / 180.0);
-  TriangleMesh t;
-  t.V.resize(6, 3);
-  t.V << -1, rise, -1, 1, rise, -1, -1, 0, 0, 1, 0, 0, -1, rise, 1, 1, rise, 1;
-  t.F.resize(4, 3);
-  t.F << 0, 2, 1, 1, 2, 3, 2, 4, 3, 3, 4, 5;
-  return t;
-}
-
 // A vertex in the contact layer over the crease of a V trough, on its bisector, where the
 // closest body triangle changes from one slope to the other: the contact energy is C1 there
 // (one penalty on the distance to the closest triangle has a kink, and Newton stalled on it),
 // so its derivatives match central differences and its force does not jump across.
 TEST(Derivatives, BodyContactOnAConcaveCrease) {
-  const TriangleMesh trough = v_trough();
+  const TriangleMesh trough = test::v_trough(10.0);
   for (int f = 0; f < trough.F.rows(); ++f) {  // faces up
     const Vector3d a = trough.V.row(trough.F(f, 0)), b = trough.V.row(trough.F(f, 1)), c = trough.V.row(trough.F(f, 2));
     ASSERT_GT((b - a).cross(c - a).y(), 0.0);

@@ -117,12 +117,7 @@ TEST(HardCases, InitialDrapeOneCentimetreInsideTheBody) {
 // on that distance Newton stalled in such a V (a 14K-triangle skirt stopped at relative
 // residual 1.3e-3); the contact is C1 there now.
 TEST(HardCases, SheetSettlesIntoAConcaveCreaseOfTheBody) {
-  const double rise = std::tan(10.0 * std::numbers::pi / 180.0);
-  TriangleMesh trough;
-  trough.V.resize(6, 3);
-  trough.V << -1, rise, -1, 1, rise, -1, -1, 0, 0, 1, 0, 0, -1, rise, 1, 1, rise, 1;
-  trough.F.resize(4, 3);
-  trough.F << 0, 2, 1, 1, 2, 3, 2, 4, 3, 3, 4, 5;
+  const TriangleMesh trough = test::v_trough(10.0);
   // 0.2 m square, 2 cm above the crease (the slopes are 1.8 cm high under its sides), rows of
   // vertices along x, the middle one at z = 0.
   const Garment g = grid_garment({flat_panel("sheet", 20, 20, 0.2, 0.2, {-0.1, 0.02, 0.1}, Vector3d::UnitX(), -Vector3d::UnitZ())}, 1e-12);
