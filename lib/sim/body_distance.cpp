@@ -90,7 +90,6 @@ BodyPoint BodyDistance::at(const Vector3d& p) const {
   BodyPoint out;
   out.closest = {point.x(), point.y(), point.z()};
   out.normal = normals_.row(f);
-  out.face = f;
   const Vector3d offset = p - out.closest;
   // The closest triangle's side decides the sign. Off its interior (closest point on an edge or
   // corner) the offset direction is the better normal for the penalty force.
@@ -103,23 +102,6 @@ BodyPoint BodyDistance::at(const Vector3d& p) const {
   return out;
 }
 
-namespace {
-BodyFeaturePoint closest_on(const Vector3d& p, const Triangle& t) {
-  const Vector3d a(t[0].x(), t[0].y(), t[0].z()), b(t[1].x(), t[1].y(), t[1].z()), c(t[2].x(), t[2].y(), t[2].z());
-  const TriangleClosestPoint q = closest_point_on_triangle(p, a, b, c);
-  BodyFeaturePoint out;
-  out.closest = q.weights(0) * a + q.weights(1) * b + q.weights(2) * c;
-  if (q.feature >= 1 && q.feature <= 3) {
-    const Vector3d corners[3] = {a, b, c};
-    out.kind = BodyFeaturePoint::Segment;
-    out.edge = (corners[q.feature % 3] - corners[q.feature - 1]).normalized();
-  } else if (q.feature >= 4) {
-    out.kind = BodyFeaturePoint::Point;
-  }
-  return out;
-}
-} // namespace
-
 std::vector<BodyFeaturePoint> BodyDistance::contact_features(const Vector3d& p, double radius) const {
   const CGAL::Bbox_3 box(p.x() - radius, p.y() - radius, p.z() - radius, p.x() + radius, p.y() + radius, p.z() + radius);
   std::vector<Iterator> candidates;
@@ -129,7 +111,11 @@ std::vector<BodyFeaturePoint> BodyDistance::contact_features(const Vector3d& p, 
   bool concave = false;
   for (const Iterator& id : candidates) {
     const int f = static_cast<int>(id - tree_->triangles.cbegin());
-    BodyFeaturePoint term = closest_on(p, *id);
+    const Triangle& t = *id;
+    const Vector3d a(t[0].x(), t[0].y(), t[0].z()), b(t[1].x(), t[1].y(), t[1].z()), c(t[2].x(), t[2].y(), t[2].z());
+    BodyFeaturePoint term;
+    const Vector3d w = closest_point_on_triangle(p, a, b, c).weights;
+    term.closest = w(0) * a + w(1) * b + w(2) * c;
     if (!((p - term.closest).norm() < radius)) continue;
     concave = concave || face_near_concave_[static_cast<size_t>(f)];
     near_faces.push_back(f);
@@ -151,22 +137,16 @@ std::vector<BodyFeaturePoint> BodyDistance::contact_features(const Vector3d& p, 
     term.closest = a + s * (b - a);
     if (!((p - term.closest).norm() < radius)) continue;
     term.weight = -1;
-    term.kind = s > 0.0 && s < 1.0 ? BodyFeaturePoint::Segment : BodyFeaturePoint::Point;
-    term.edge = (b - a).normalized();
+    if (s > 0.0 && s < 1.0) term.edge = (b - a).normalized();
     out.push_back(term);
   }
   for (int v : corners) {
     BodyFeaturePoint term;
     term.closest = vertices_.row(v);
     if (!((p - term.closest).norm() < radius)) continue;
-    term.kind = BodyFeaturePoint::Point;
     out.push_back(term);
   }
   return out;
-}
-
-BodyFeaturePoint BodyDistance::on_triangle(const Vector3d& p, int f) const {
-  return closest_on(p, tree_->triangles[static_cast<size_t>(f)]);
 }
 
 } // namespace foldsketch

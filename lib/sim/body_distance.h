@@ -16,18 +16,15 @@ struct BodyPoint {
   double distance = 0;  // signed [m]: positive on the side the closest triangle faces
   Vector3d normal;      // unit normal of the closest triangle (direction of increasing distance)
   Vector3d closest;     // closest point on the body [m]
-  int face = -1;        // the body triangle it lies on
 };
 
 // One term of the body contact near a point (see BodyDistance::contact_features): the closest
-// point of a body face, edge or corner [m], the term's weight (+1 faces and corners, -1 edges),
-// and what the closest point lies on, for the distance's curvature: a face interior (none), a
-// segment with unit direction `edge`, or a point.
+// point of a body face, edge or corner [m] and the term's weight (+1 faces and corners, -1
+// edges). For an edge whose closest point lies inside it, `edge` is its unit direction (the
+// distance's curvature is then (I - u u^T - e e^T) / d); otherwise zero.
 struct BodyFeaturePoint {
-  enum Kind { Plane, Segment, Point };
   Vector3d closest;
   double weight = 1;
-  Kind kind = Plane;
   Vector3d edge = Vector3d::Zero();
 };
 
@@ -46,8 +43,6 @@ public:
   // where the closest point jumps from one side to the other (the distance itself has a kink
   // there). Empty when no concave edge is within reach: then the closest point alone is exact.
   std::vector<BodyFeaturePoint> contact_features(const Vector3d& p, double radius) const;
-  // The closest point to p on body triangle f, as a contact term of weight 1.
-  BodyFeaturePoint on_triangle(const Vector3d& p, int f) const;
 
 private:
   struct Tree;

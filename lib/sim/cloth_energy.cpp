@@ -310,7 +310,7 @@ EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, Sparse
       const double k = model_.contact_stiffness * model_.contact_area(v);
       std::vector<BodyFeaturePoint> terms_here;
       if (b.distance > 0.0) terms_here = model_.body->contact_features(p, t);
-      if (terms_here.empty()) terms_here.push_back(model_.body->on_triangle(p, b.face));
+      if (terms_here.empty()) terms_here.push_back({b.closest});
       const double sign = b.distance < 0.0 ? -1.0 : 1.0;
       for (const BodyFeaturePoint& f : terms_here) {
         const Vector3d offset = p - f.closest;
@@ -323,10 +323,8 @@ EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, Sparse
         if (want_gradient) grad.segment<3>(3 * a) -= f.weight * k * depth * u;
         if (want_hessian) {
           Eigen::Matrix3d H = k * u * u.transpose();
-          if (f.weight < 0.0 && f.kind != BodyFeaturePoint::Plane && !on_surface)
-            H -= k * depth * sign * (Eigen::Matrix3d::Identity() - u * u.transpose() - f.edge * f.edge.transpose() *
-                                                                             (f.kind == BodyFeaturePoint::Segment ? 1.0 : 0.0)) /
-                 distance;
+          if (f.weight < 0.0 && !on_surface)  // an edge: curvature of the distance to it
+            H -= k * depth * sign * (Eigen::Matrix3d::Identity() - u * u.transpose() - f.edge * f.edge.transpose()) / distance;
           H *= f.weight;
           const Block& d = diagonal_blocks_[static_cast<size_t>(a)];
           for (int c = 0; c < 3; ++c)
