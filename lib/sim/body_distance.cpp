@@ -106,6 +106,11 @@ std::vector<BodyFeaturePoint> BodyDistance::contact_features(const Vector3d& p, 
   const CGAL::Bbox_3 box(p.x() - radius, p.y() - radius, p.z() - radius, p.x() + radius, p.y() + radius, p.z() + radius);
   std::vector<Iterator> candidates;
   tree_->tree.all_intersected_primitives(box, std::back_inserter(candidates));
+  // Most of a body is far from any concave edge: settle that before computing distances.
+  if (std::none_of(candidates.begin(), candidates.end(), [&](const Iterator& id) {
+        return face_near_concave_[static_cast<size_t>(id - tree_->triangles.cbegin())] != 0;
+      }))
+    return {};
   std::vector<BodyFeaturePoint> out;
   std::vector<int> near_faces;
   bool concave = false;
