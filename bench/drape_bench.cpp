@@ -62,6 +62,7 @@ int main(int argc, char** argv) {
   std::string body_path = "samples/bodies/mean_all.obj", csv_path, warm_csv_path;
   std::vector<std::string> starts{"cold", "warm"};
   std::vector<std::string> presets{"accurate", "fast"};
+  std::string material_name;
   double ease = 0.02;
   bool trace = false, no_reference = false;
   double time_step = DrapeSettings{}.time_step;
@@ -74,6 +75,8 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->check(CLI::IsMember({"cold", "warm"}));
   app.add_option("--presets", presets, "solver presets to time")->delimiter(',')->check(CLI::IsMember({"accurate", "fast"}));
+  app.add_option("--material", material_name, "fabric preset instead of the skirt sample's (thin cotton)")
+      ->check(CLI::IsMember(material_preset_names()));
   app.add_option("--ease", ease, "warm start: relative widening of every pattern (pattern x)")->check(CLI::PositiveNumber);
   app.add_option("--time-step", time_step, "first quasi-static step [s]: the solver's damping starts at 1/h^2")
       ->check(CLI::PositiveNumber);
@@ -153,6 +156,7 @@ int main(int argc, char** argv) {
     params.triangles = size;
     SampleScene sample = make_sample("skirt", params, &body.V);
     sample.scene.body = BodySettings{"body"};
+    if (!material_name.empty()) sample.scene.material = *material_preset(material_name);
     const std::vector<int> pinned = pinned_vertices(sample.scene, sample.garment.V);
     const ClothModel model = cloth_model(sample.garment, sample.scene, &body, pinned);
     std::optional<DrapeResult> reference;
