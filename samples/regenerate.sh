@@ -10,6 +10,6 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 bin=${1:-$here/../build/bin}
 for name in flag skirt box-cover dress; do
   "$bin/make-sample" "$name" --mesh isotropic --body "$here/bodies/mean_all.obj" -o "$here/$name"
-  "$bin/drape-free" "$here/$name/scene.xml" --max-steps 4000 -o "$here/$name/garment.draped.obj"
+  "$bin/drape-free" "$here/$name/scene.xml" -o "$here/$name/garment.draped.obj"
   mv "$here/$name/garment.draped.obj" "$here/$name/garment.obj"
 done

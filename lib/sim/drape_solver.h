@@ -31,7 +31,7 @@ struct DrapeSettings {
   SimulationMode mode = SimulationMode::Static;
   SolverPreset preset = SolverPreset::Accurate;
   double time_step = 0.01;          // [s]: dynamic step, or the first quasi-static step
-  int max_steps = 1000;             // Newton iterations (static) or time steps (dynamic)
+  int max_steps = SimulatorSettings{}.max_steps;  // Newton iterations (static) or time steps (dynamic)
   // Dynamic mode: drag force -drag * M v [1/s] (air and internal friction), so a drape comes
   // to rest: a cloth pendulum under backward Euler alone keeps swinging for tens of seconds at
   // millisecond steps. 1/s halves a swing in about 0.7 s; our choice.

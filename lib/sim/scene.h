@@ -35,7 +35,11 @@ struct SimulatorSettings {
   SimulationMode mode = SimulationMode::Static;
   SolverPreset preset = SolverPreset::Accurate;
   double time_step = 0.01;    // [s]; our default, the engine adapts it
-  int max_steps = 1000;       // time steps before giving up
+  // Newton iterations (static) or time steps (dynamic) before giving up. A safeguard, not a
+  // stopping rule: a static drape stops by itself at the tolerance or when no step lowers the
+  // energy. Measured cold drapes take up to 1092 iterations (silk skirt, 10K triangles) and
+  // 976 (thin cotton, 54K; bench/drape_bench.txt), so the limit leaves about 5x headroom.
+  int max_steps = 5000;
   double tolerance = 1e-6;    // relative force residual at which a static drape has converged
 };
 
