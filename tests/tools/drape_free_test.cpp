@@ -44,6 +44,7 @@ TEST(DrapeFree, UnconvergedDrapeIsNotWrittenUnlessAsked) {
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("drape-free: did not converge (stopped after 2 iterations"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("nothing written"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--max-steps (or the scene's max-steps) raises the limit"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(out));
   const auto kept = test::run(test::tool_path("drape-free") + " --max-steps 2 --write-unconverged " + folder + "/scene.xml -o " + out);
   EXPECT_EQ(kept.status, 1);
