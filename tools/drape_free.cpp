@@ -33,10 +33,10 @@ std::string self_contact_text(const DrapeStats& s, int self_vertices) {
 std::string human(const DrapeStats& s, double tolerance, int self_vertices) {
   char line[1024];
   std::snprintf(line, sizeof line,
-                "drape-free: %s: %d steps, %d Newton iterations, %d factorisations; relative force residual %.2e "
+                "drape-free: %s: %d steps, %d Newton iterations (%d with projected membrane elements), %d factorisations; relative force residual %.2e "
                 "(tolerance %.0e, 2-norm over free vertices / weight); max strain %.3f %%; deepest body penetration "
                 "%.3f mm%s\ndrape-free: time %.2f s (assembly %.2f, factorisation %.2f, solve %.2f, line search %.2f)\n",
-                s.message.c_str(), s.steps, s.newton_iterations, s.factorizations, s.residual, tolerance, 100 * s.max_strain,
+                s.message.c_str(), s.steps, s.newton_iterations, s.projected_iterations, s.factorizations, s.residual, tolerance, 100 * s.max_strain,
                 1000 * s.max_penetration, self_contact_text(s, self_vertices).c_str(), s.seconds_total, s.seconds_assembly, s.seconds_factorization,
                 s.seconds_solve, s.seconds_line_search);
   return line;
@@ -46,6 +46,7 @@ std::string json(const DrapeStats& s, double tolerance, const std::string& outpu
   JsonWriter j;
   j.begin_object().key("converged").value(s.converged).key("message").value(s.message);
   j.key("output").value(written ? output : "").key("steps").value(s.steps).key("newton_iterations").value(s.newton_iterations);
+  j.key("projected_iterations").value(s.projected_iterations);
   j.key("factorizations").value(s.factorizations).key("residual").value(s.residual).key("tolerance").value(tolerance);
   j.key("energy_J").begin_object().key("membrane").value(s.energy.membrane).key("bending").value(s.energy.bending);
   j.key("gravity").value(s.energy.gravity).key("stitches").value(s.energy.stitches).key("contact").value(s.energy.contact);

@@ -55,16 +55,26 @@ DrapeSettings drape_settings(const SimulatorSettings& scene) {
   return s;
 }
 
+namespace {
+double principal_stretch(const ClothModel& model, const MatrixX3d& x, size_t t, int which) {
+  const auto& v = model.triangles[t];
+  const Eigen::Vector3d e = green_strain(x.row(v[0]), x.row(v[1]), x.row(v[2]), model.rest[t]);
+  const Eigen::Matrix2d E = (Eigen::Matrix2d() << e(0), e(2), e(2), e(1)).finished();
+  const double value = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(E, Eigen::EigenvaluesOnly).eigenvalues()(which);
+  return std::sqrt(std::max(0.0, 1.0 + 2.0 * value));
+}
+} // namespace
+
 double max_strain(const ClothModel& model, const MatrixX3d& x) {
   double worst = 0.0;
-  for (size_t t = 0; t < model.triangles.size(); ++t) {
-    const auto& v = model.triangles[t];
-    const Eigen::Vector3d e = green_strain(x.row(v[0]), x.row(v[1]), x.row(v[2]), model.rest[t]);
-    const Eigen::Matrix2d E = (Eigen::Matrix2d() << e(0), e(2), e(2), e(1)).finished();
-    const double largest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(E, Eigen::EigenvaluesOnly).eigenvalues()(1);
-    worst = std::max(worst, std::sqrt(std::max(0.0, 1.0 + 2.0 * largest)) - 1.0);
-  }
+  for (size_t t = 0; t < model.triangles.size(); ++t) worst = std::max(worst, principal_stretch(model, x, t, 1) - 1.0);
   return worst;
+}
+
+double min_stretch(const ClothModel& model, const MatrixX3d& x) {
+  double least = 1.0;
+  for (size_t t = 0; t < model.triangles.size(); ++t) least = std::min(least, principal_stretch(model, x, t, 0));
+  return least;
 }
 
 double max_penetration(const ClothModel& model, const MatrixX3d& x) {
@@ -141,10 +151,16 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
     }
     return value;
   };
+  // The membrane Hessian of the current iteration: membrane_kind, or projected while the
+  // fallback (DrapeSettings::membrane_fallback) holds; fallback_left more iterations to go.
+  HessianKind membrane_now = membrane_kind;
+  int fallback_left = 0;
+  const bool fallback_allowed = settings.membrane_fallback && membrane_kind == HessianKind::Exact &&
+                                min_stretch(model, x) < settings.membrane_fallback_stretch;
   // Energy (and derivatives) of E alone; timing kept per phase.
   const auto evaluate = [&](const MatrixX3d& y, VectorXd* grad, SparseMatrix* hess) {
     const auto t0 = Clock::now();
-    const EnergyTerms e = energy.evaluate(y, grad, hess, membrane_kind, bending_kind);
+    const EnergyTerms e = energy.evaluate(y, grad, hess, membrane_now, bending_kind);
     stats.seconds_assembly += since(t0);
     return e;
   };
@@ -179,6 +195,14 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         energy.add_mass(A, mass_term - applied_damping);
         applied_damping = mass_term;
         factor_current = cholesky.factorize(A);
+        if (!factor_current && fallback_allowed && membrane_now == HessianKind::Exact) {
+          // Not positive definite: the same damping with projected membrane elements first.
+          membrane_now = HessianKind::Projected;
+          fallback_left = settings.membrane_fallback_iterations;
+          evaluate(x, nullptr, &A);
+          applied_damping = 0.0;
+          continue;
+        }
         if (!factor_current) {  // not positive definite: more damping on the same Hessian
           damping *= 10.0;
           if (damping > kMaxDamping) return false;
@@ -186,6 +210,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         }
       }
       ++stats.newton_iterations;
+      if (membrane_now != membrane_kind) ++stats.projected_iterations;
       VectorXd dx = cholesky.solve(-g);
       double slope = g.dot(dx);
       if (!(slope < 0.0)) {  // no descent (roundoff in a nearly singular factor): refactorise
@@ -253,6 +278,8 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   for (int iteration = 0;; ++iteration) {
     // E's gradient and Hessian at the current drape; every iteration factorises afresh.
     VectorXd g;
+    if (fallback_left > 0) --fallback_left;
+    else membrane_now = membrane_kind;
     stats.energy = assemble(x, &g);
     stats.residual = n > 0 ? g.norm() / scale : 0.0;
     if (dynamic) stats.kinetic_energy = 0.5 * velocity.dot(mass.cwiseProduct(velocity));
