@@ -74,7 +74,11 @@ struct DrapeSettings {
   // Iterations, 5: 264 on the BGL skirt with 304 factorisations; re-trying the exact Hessian
   // at every iteration, 264 with 506. Not solved by this rule: a start squeezed by less,
   // with the squeezed edge pinned (a sheet at 0.95 of its width), still crawls with the exact
-  // Hessian (residual 2e-3 after 400 iterations), where the fallback would converge in 76.
+  // Hessian (residual 2e-3 after 400 iterations), where the fallback would converge in 76. And
+  // the projection removes exactly the curvature that points out of a flat, squeezed sheet: a
+  // perfectly flat sheet at 0.98, forced to fall back, converges in 4 iterations to the flat
+  // compressed state, an unstable equilibrium. A wider rule needs a check of the exact
+  // Hessian at convergence.
   bool membrane_fallback = true;
   // The sample skirts start at 1 (sewn placement) or 0.98 (re-drape with 2 % ease); the BGL
   // skirt's placement at 0.58 and the squeezed sheet of the DrapeSolver test at 0.6. Our
