@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "formats/body_mesh.h"
 #include "mesh/isotropic_mesh.h"
 
 #include <Eigen/Geometry>
@@ -93,6 +94,24 @@ Garment polygon_panel(const std::string& name, const MatrixX2d& outline, double 
   g.face_panel = VectorXi::Zero(mesh.F.rows());
   g.panels = {Panel{name}};
   return g;
+}
+
+std::vector<int> top_row(const Garment& g) {
+  std::vector<int> top;
+  for (int v = 0; v < g.V.rows(); ++v)
+    if (g.V(v, 1) > g.V.col(1).maxCoeff() - 1e-9) top.push_back(v);
+  return top;
+}
+
+SkirtOnBody skirt_on_body(int triangles) {
+  const TriangleMesh human = read_body_mesh(source_path("samples/bodies/mean_all.obj"));
+  SampleParams params;
+  params.triangles = triangles;
+  SkirtOnBody out{make_sample("skirt", params, &human.V), {}, {}};
+  out.skirt.scene.body = BodySettings{"body"};
+  out.pinned = pinned_vertices(out.skirt.scene, out.skirt.garment.V);
+  out.model = cloth_model(out.skirt.garment, out.skirt.scene, &human, out.pinned);
+  return out;
 }
 
 Garment two_sewn_squares() {

@@ -6,6 +6,8 @@
 
 #include "garment/garment.h"
 #include "mesh/primitive_meshes.h"
+#include "samples/sample_scenes.h"
+#include "sim/cloth_model.h"
 
 namespace foldsketch::test {
 
@@ -24,6 +26,18 @@ Garment square_panel(int n, double size = 1.0);
 // A body with one concave crease: two slopes rising `slope_degrees` from the x axis on either
 // side (a V trough, faces up), 2 m square.
 TriangleMesh v_trough(double slope_degrees);
+
+// The drape vertices in g's highest row (largest y), the ones a hanging test pins.
+std::vector<int> top_row(const Garment& g);
+
+// The skirt sample at about `triangles` triangles in its sewn placement around the project's
+// body (samples/bodies/mean_all.obj), pinned at its waist as its scene says, with its model.
+struct SkirtOnBody {
+  SampleScene skirt;
+  std::vector<int> pinned;
+  ClothModel model;
+};
+SkirtOnBody skirt_on_body(int triangles);
 
 // Two unit squares side by side, sewn along their shared edge by welding: "left" and "right".
 Garment two_sewn_squares();

@@ -1,9 +1,7 @@
 // The drape solver's iteration control (the physics it solves is tested in physics_test.cpp).
 #include <gtest/gtest.h>
 
-#include "formats/body_mesh.h"
 #include "samples/grid_garment.h"
-#include "samples/sample_scenes.h"
 #include "sim/drape_solver.h"
 #include "support/test_support.h"
 
@@ -21,13 +19,10 @@ SqueezedSheet squeezed_sheet(double squeeze) {
   GridPanel p = flat_panel("sheet", 20, 20, 0.3, 0.3, {0, 0.5, 0}, Vector3d::UnitX(), Vector3d::UnitY());
   for (int v = 0; v < p.drape.rows(); ++v) p.drape(v, 0) = 0.15 + squeeze * (p.drape(v, 0) - 0.15);
   SqueezedSheet s{grid_garment({p}, 1e-12), {}};
-  std::vector<int> top;
-  for (int v = 0; v < s.garment.V.rows(); ++v)
-    if (s.garment.V(v, 1) > s.garment.V.col(1).maxCoeff() - 1e-9) top.push_back(v);
   Scene scene;
   scene.material = *material_preset("cotton-thin");
   scene.physics.body_contact = false;
-  s.model = cloth_model(s.garment, scene, nullptr, top);
+  s.model = cloth_model(s.garment, scene, nullptr, test::top_row(s.garment));
   return s;
 }
 
@@ -56,14 +51,9 @@ TEST(DrapeSolver, MembraneFallbackKeepsCompressionFromLockingTheDamping) {
 // the fallback always on, the 54K sample skirt took 22 minutes instead of 6). A small sample
 // skirt, from its sewn placement around the body.
 TEST(DrapeSolver, MembraneFallbackLeavesStartsNearTheRestShapeAlone) {
-  const TriangleMesh human = read_body_mesh(test::source_path("samples/bodies/mean_all.obj"));
-  SampleParams params;
-  params.triangles = 1500;
-  SampleScene skirt = make_sample("skirt", params, &human.V);
-  skirt.scene.body = BodySettings{"body"};
-  const ClothModel model = cloth_model(skirt.garment, skirt.scene, &human, pinned_vertices(skirt.scene, skirt.garment.V));
-  ASSERT_GT(min_stretch(model, skirt.garment.V), 0.99);
-  const DrapeResult r = solve_drape(model, skirt.garment.V, DrapeSettings{});
+  const test::SkirtOnBody s = test::skirt_on_body(1500);
+  ASSERT_GT(min_stretch(s.model, s.skirt.garment.V), 0.99);
+  const DrapeResult r = solve_drape(s.model, s.skirt.garment.V, DrapeSettings{});
   ASSERT_TRUE(r.stats.converged) << r.stats.message;
   EXPECT_GT(r.stats.factorizations, r.stats.newton_iterations) << "no factorisation was refused: the case tests nothing";
   EXPECT_EQ(r.stats.projected_iterations, 0);

@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include "formats/body_mesh.h"
 #include "formats/garment_io.h"
 #include "mesh/triangle_geometry.h"
 #include "samples/grid_garment.h"
@@ -37,13 +36,6 @@ Garment sheet_with_sliver_column(double sliver_width) {
   return grid_garment({p}, 1e-12);
 }
 
-std::vector<int> top_row(const Garment& g) {
-  std::vector<int> top;
-  for (int v = 0; v < g.V.rows(); ++v)
-    if (g.V(v, 1) > g.V.col(1).maxCoeff() - 1e-9) top.push_back(v);
-  return top;
-}
-
 void expect_converged_and_finite(const DrapeResult& r) {
   EXPECT_TRUE(r.stats.converged) << r.stats.message;
   EXPECT_TRUE(r.V.allFinite());
@@ -53,14 +45,14 @@ TEST(HardCases, SliversDownToHalfADegree) {
   const Garment g = sheet_with_sliver_column(0.03 * std::tan(0.5 * std::numbers::pi / 180));
   const double smallest = min_angles(g.P, g.FP).minCoeff() * 180 / std::numbers::pi;
   ASSERT_NEAR(smallest, 0.5, 0.01);
-  const ClothModel model = cloth_model(g, hanging_scene(*material_preset("cotton-thin")), nullptr, top_row(g));
+  const ClothModel model = cloth_model(g, hanging_scene(*material_preset("cotton-thin")), nullptr, test::top_row(g));
   expect_converged_and_finite(solve_drape(model, g.V, {}));
 }
 
 TEST(HardCases, SilkAndLeather) {
   const Garment g = sheet_with_sliver_column(0.03);
   for (const char* name : {"silk", "leather"}) {
-    const ClothModel model = cloth_model(g, hanging_scene(*material_preset(name)), nullptr, top_row(g));
+    const ClothModel model = cloth_model(g, hanging_scene(*material_preset(name)), nullptr, test::top_row(g));
     expect_converged_and_finite(solve_drape(model, g.V, {}));
   }
 }
@@ -75,7 +67,7 @@ TEST(HardCases, DynamicStepsFromOneMillisecondToOneSecond) {
     tilted.V(v, 1) = top - d * std::cos(std::numbers::pi / 6);
     tilted.V(v, 2) = d * std::sin(std::numbers::pi / 6);
   }
-  const ClothModel model = cloth_model(g, hanging_scene(*material_preset("cotton-thin")), nullptr, top_row(g));
+  const ClothModel model = cloth_model(g, hanging_scene(*material_preset("cotton-thin")), nullptr, test::top_row(g));
   const double start_swing = tilted.V.col(2).cwiseAbs().maxCoeff();
   for (const double step : {1e-3, 1e-2, 1e-1, 1.0}) {
     DrapeSettings s;
@@ -145,21 +137,15 @@ TEST(HardCases, SheetSettlesIntoAConcaveCreaseOfTheBody) {
 // the suite (364 s in a clean-clone run; bench/drape_bench.txt: 319 s alone, before the C1
 // body contact).
 TEST(HardCases, FiftyFourThousandTriangleSkirtDrapes) {
-  const TriangleMesh human = read_body_mesh(test::source_path("samples/bodies/mean_all.obj"));
-  SampleParams params;
-  params.triangles = 54000;
-  SampleScene skirt = make_sample("skirt", params, &human.V);
-  skirt.scene.body = BodySettings{"body"};
-  const std::vector<int> pinned = pinned_vertices(skirt.scene, skirt.garment.V);
-  const ClothModel model = cloth_model(skirt.garment, skirt.scene, &human, pinned);
-  ASSERT_GT(model.triangles.size(), 52000u);
+  const test::SkirtOnBody s = test::skirt_on_body(54000);
+  ASSERT_GT(s.model.triangles.size(), 52000u);
   DrapeSettings settings;
   settings.max_steps = 5000;
-  const DrapeResult r = solve_drape(model, skirt.garment.V, settings);
+  const DrapeResult r = solve_drape(s.model, s.skirt.garment.V, settings);
   expect_converged_and_finite(r);
   EXPECT_LE(r.stats.residual, 1e-6);
   EXPECT_LE(r.stats.max_penetration, 0.0005);
-  for (int v : pinned) EXPECT_EQ(r.V.row(v), skirt.garment.V.row(v)) << "pin " << v << " moved";
+  for (int v : s.pinned) EXPECT_EQ(r.V.row(v), s.skirt.garment.V.row(v)) << "pin " << v << " moved";
 }
 
 // A real garment from its real placement: the Berkeley Garment Library's skirt (isotropic
@@ -189,7 +175,7 @@ TEST(HardCases, RealGarmentHangsFromItsDistortedPlacement) {
 
 TEST(HardCases, NaNInputIsRefusedNotPropagated) {
   Garment g = sheet_with_sliver_column(0.03);
-  const ClothModel model = cloth_model(g, hanging_scene(*material_preset("cotton-thin")), nullptr, top_row(g));
+  const ClothModel model = cloth_model(g, hanging_scene(*material_preset("cotton-thin")), nullptr, test::top_row(g));
   g.V(3, 1) = std::nan("");
   EXPECT_THROW(solve_drape(model, g.V, {}), std::invalid_argument);
 }
