@@ -140,12 +140,9 @@ int main(int argc, char** argv) {
     const int self_vertices = model.self_contact ? static_cast<int>(model.self_contact->vertices.size()) : -1;
     std::cout << (as_json ? json(result.stats, effective_tolerance, output, write, self_vertices)
                           : human(result.stats, effective_tolerance, self_vertices));
-    if (!result.stats.converged) {
-      // Out of iterations while the energy still falls: say how to go on.
-      const bool out_of_steps = result.stats.message.rfind("stopped after", 0) == 0;
+    if (!result.stats.converged)
       throw std::runtime_error(std::string("did not converge (") + result.stats.message + ")" +
                                (write ? "; wrote the unconverged drape as asked" : "; nothing written") +
-                               (out_of_steps ? "; --max-steps (or the scene's max-steps) raises the limit" : ""));
-    }
+                               (result.stats.out_of_steps ? "; --max-steps (or the scene's max-steps) raises the limit" : ""));
   });
 }

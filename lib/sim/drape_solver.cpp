@@ -298,6 +298,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
       std::snprintf(text, sizeof text, "stopped after %d %s with relative residual %.3g above %.3g", settings.max_steps,
                     dynamic ? "time steps" : "iterations", stats.residual, tolerance);
       stats.message = text;
+      stats.out_of_steps = true;
       break;
     }
 

@@ -96,6 +96,7 @@ double stopping_tolerance(const DrapeSettings& settings);
 struct DrapeStats {
   bool converged = false;
   std::string message;              // why it stopped, in words
+  bool out_of_steps = false;        // stopped by max_steps, not converged (the energy was still falling)
   int steps = 0;                    // accepted steps
   int newton_iterations = 0;
   int factorizations = 0;
