@@ -32,6 +32,7 @@ public:
   double solve_seconds() const { return solve_seconds_; }
 
 private:
+  void build_permuted(const Eigen::SparseMatrix<double>& A);
   struct State;
   std::unique_ptr<State> state_;
   int factorizations_ = 0;
