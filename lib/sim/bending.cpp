@@ -28,20 +28,44 @@ Mat9 sym_outer(const Vec9& u, const Vec9& v) { return u * v.transpose() + v * u.
 //   (n1 x n2) . a / |a| = -det(a, b, c) |a|
 // so theta = atan2(y, x) with y = -det(a,b,c) |a| and x = (a.c)(a.b) - |a|^2 (b.c): both are
 // polynomials in a, b, c except |a|, and the derivatives follow by the chain rule.
+namespace {
+// The polynomial parts of the angle (see dihedral_angle), shared with dihedral_theta so that
+// both give the same theta to the last bit.
+struct AngleParts {
+  Vector3d a, b, c;
+  double p, q, s, t, L, D, x, y, r2;
+  // r2 = |n1|^2 |n2|^2 |a|^2 up to sign conventions: zero when either triangle collapses.
+  bool degenerate() const { return !(r2 > 1e-300) || !(L > 0.0); }
+};
+AngleParts angle_parts(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const Vector3d& x3) {
+  AngleParts k;
+  k.a = x1 - x0, k.b = x2 - x0, k.c = x3 - x0;
+  k.p = k.a.dot(k.b), k.q = k.a.dot(k.c), k.s = k.a.dot(k.a), k.t = k.b.dot(k.c);
+  k.L = std::sqrt(k.s);
+  k.D = k.a.dot(k.b.cross(k.c));
+  k.x = k.q * k.p - k.s * k.t;
+  k.y = -k.D * k.L;
+  k.r2 = k.x * k.x + k.y * k.y;
+  return k;
+}
+} // namespace
+
+double dihedral_theta(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const Vector3d& x3, bool* degenerate) {
+  const AngleParts k = angle_parts(x0, x1, x2, x3);
+  if (degenerate) *degenerate = k.degenerate();
+  return k.degenerate() ? 0.0 : std::atan2(k.y, k.x);
+}
+
 DihedralAngle dihedral_angle(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const Vector3d& x3,
                              bool want_hessian) {
-  const Vector3d a = x1 - x0, b = x2 - x0, c = x3 - x0;
-  const double p = a.dot(b), q = a.dot(c), s = a.dot(a), t = b.dot(c);
-  const double L = std::sqrt(s);
-  const double D = a.dot(b.cross(c));
-  const double x = q * p - s * t;
-  const double y = -D * L;
-  const double r2 = x * x + y * y;
+  const AngleParts parts = angle_parts(x0, x1, x2, x3);
+  const Vector3d &a = parts.a, &b = parts.b, &c = parts.c;
+  const double p = parts.p, q = parts.q, s = parts.s, t = parts.t, L = parts.L, D = parts.D, x = parts.x, y = parts.y,
+               r2 = parts.r2;
   DihedralAngle out;
   out.gradient.setZero();
   out.hessian.setZero();
-  // r2 = |n1|^2 |n2|^2 |a|^2 up to sign conventions: zero when either triangle collapses.
-  if (!(r2 > 1e-300) || !(L > 0.0)) {
+  if (parts.degenerate()) {
     out.degenerate = true;
     return out;
   }
@@ -109,6 +133,14 @@ DihedralAngle dihedral_angle(const Vector3d& x0, const Vector3d& x1, const Vecto
 
 double hinge_stiffness(double bending, double rest_edge_length, double rest_area_1, double rest_area_2) {
   return 0.5 * bending * rest_edge_length * rest_edge_length / (rest_area_1 + rest_area_2);
+}
+
+double hinge_energy(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const Vector3d& x3, double stiffness,
+                    double rest_angle) {
+  bool degenerate = false;
+  const double theta = dihedral_theta(x0, x1, x2, x3, &degenerate);
+  const double d = degenerate ? 0.0 : theta - rest_angle;
+  return stiffness * d * d;
 }
 
 Element12 hinge_element(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const Vector3d& x3, double stiffness,

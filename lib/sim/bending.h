@@ -23,6 +23,8 @@ struct DihedralAngle {
 
 DihedralAngle dihedral_angle(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const Vector3d& x3,
                              bool want_hessian);
+// theta alone (0 and *degenerate set when a triangle has collapsed), equal to dihedral_angle's.
+double dihedral_theta(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const Vector3d& x3, bool* degenerate = nullptr);
 
 // k = (D/2) |e|^2 / (A1 + A2) from rest edge length [m], rest areas [m^2] and D [N m].
 double hinge_stiffness(double bending, double rest_edge_length, double rest_area_1, double rest_area_2);
@@ -35,5 +37,8 @@ struct Element12 {
 
 Element12 hinge_element(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const Vector3d& x3, double stiffness,
                         double rest_angle, bool want_hessian, HessianKind kind);
+// hinge_element's energy alone (line searches need no derivatives).
+double hinge_energy(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const Vector3d& x3, double stiffness,
+                    double rest_angle);
 
 } // namespace foldsketch

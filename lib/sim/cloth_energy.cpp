@@ -222,8 +222,13 @@ EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, Sparse
         if (const int a = free_index_[vs[i]]; a >= 0) grad.segment<3>(3 * a) += g.template segment<3>(3 * i);
     };
     const auto share = [&](size_t count) { return thread_share(count, me_int, threads); };
+    const bool energy_only = !want_gradient && !want_hessian;
     for (auto [t, end] = share(model_.triangles.size()); t < end; ++t) {
       const auto& v = model_.triangles[static_cast<size_t>(t)];
+      if (energy_only) {
+        mine.membrane += membrane_energy(x.row(v[0]), x.row(v[1]), x.row(v[2]), model_.rest[static_cast<size_t>(t)], model_.stiffness);
+        continue;
+      }
       const Element9 e = membrane_element(x.row(v[0]), x.row(v[1]), x.row(v[2]), model_.rest[static_cast<size_t>(t)],
                                           model_.stiffness, want_hessian, membrane_kind);
       mine.membrane += e.energy;
@@ -233,6 +238,10 @@ EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, Sparse
     for (auto [h, end] = share(model_.hinges.size()); h < end; ++h) {
       const Hinge& hinge = model_.hinges[static_cast<size_t>(h)];
       const auto& v = hinge.v;
+      if (energy_only) {
+        mine.bending += hinge_energy(x.row(v[0]), x.row(v[1]), x.row(v[2]), x.row(v[3]), hinge.stiffness, hinge.rest_angle);
+        continue;
+      }
       const Element12 e = hinge_element(x.row(v[0]), x.row(v[1]), x.row(v[2]), x.row(v[3]), hinge.stiffness, hinge.rest_angle,
                                         want_hessian, bending_kind);
       mine.bending += e.energy;

@@ -62,6 +62,21 @@ Eigen::Vector3d green_strain(const Vector3d& x0, const Vector3d& x1, const Vecto
   return {E(0, 0), E(1, 1), E(0, 1)};
 }
 
+namespace {
+// W = A (c11/2 E11^2 + c12 E11 E22 + c22/2 E22^2 + 2 c33 E12^2), with k the active stiffness.
+double strain_energy(const Eigen::Matrix2d& E, const MembraneStiffness& k, double area) {
+  return area * (0.5 * k.c11 * E(0, 0) * E(0, 0) + k.c12 * E(0, 0) * E(1, 1) + 0.5 * k.c22 * E(1, 1) * E(1, 1) +
+                 2.0 * k.c33 * E(0, 1) * E(0, 1));
+}
+} // namespace
+
+double membrane_energy(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest,
+                       const MembraneStiffness& stiffness) {
+  const Matrix32 F = deformation(x0, x1, x2, rest);
+  const Eigen::Matrix2d E = 0.5 * (F.transpose() * F - Eigen::Matrix2d::Identity());
+  return strain_energy(E, active(stiffness, E), rest.area);
+}
+
 Element9 membrane_element(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest,
                           const MembraneStiffness& stiffness, bool want_hessian, HessianKind kind) {
   const Matrix32 F = deformation(x0, x1, x2, rest);
@@ -70,8 +85,7 @@ Element9 membrane_element(const Vector3d& x0, const Vector3d& x1, const Vector3d
   const MembraneStiffness k = active(stiffness, E);
   const Eigen::Matrix2d S = stress(E, k);
   Element9 out;
-  out.energy = rest.area * (0.5 * k.c11 * E(0, 0) * E(0, 0) + k.c12 * E(0, 0) * E(1, 1) + 0.5 * k.c22 * E(1, 1) * E(1, 1) +
-                            2.0 * k.c33 * E(0, 1) * E(0, 1));
+  out.energy = strain_energy(E, k, rest.area);
   // dW = A (F S) : dF and dF = dDs Dm^-1, so dW/dDs = A F S Dm^-T.
   const Matrix32 G = rest.area * F * S * rest.Dm_inverse.transpose();
   out.gradient.segment<3>(3) = G.col(0);

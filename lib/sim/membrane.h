@@ -49,6 +49,10 @@ struct Element9 {
 Element9 membrane_element(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest,
                           const MembraneStiffness& k, bool want_hessian, HessianKind kind);
 
+// membrane_element's energy alone (line searches need no derivatives).
+double membrane_energy(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest,
+                       const MembraneStiffness& k);
+
 // Green strain (xx, yy, xy) of the triangle in the pattern frame.
 Eigen::Vector3d green_strain(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest);
 

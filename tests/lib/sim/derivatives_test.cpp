@@ -115,6 +115,28 @@ TEST(Derivatives, ProjectedHessiansArePositiveSemiDefinite) {
   EXPECT_GT(smallest_eigenvalue(hinge.hessian), -1e-9);
 }
 
+// The energy-only functions the line search calls give the element functions' energies to the
+// last bit (a different rounding could flip a line-search decision), slivers and collapsed
+// triangles included.
+TEST(Derivatives, EnergyOnlyFunctionsMatchTheElementsExactly) {
+  std::mt19937 rng(11);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  const MembraneStiffness k = membrane_stiffness(*material_preset("cotton-thin"), 0.01);
+  for (const double apex : {0.9, 0.0044, 0.0}) {
+    const MembraneRest rest = membrane_rest({0, 0}, {0.01, 0}, {0.005, 0.01 * std::max(apex, 1e-6)});
+    for (int trial = 0; trial < 20; ++trial) {
+      Eigen::Matrix<double, 12, 1> q;
+      q << 0, 0, 0, 0.01, 0, 0, 0.005, 0.01 * apex, 0, 0.005, -0.01, 0;
+      for (int i = 0; i < 12; ++i) q(i) += 0.002 * noise(rng);
+      if (trial == 0) q.segment<3>(6) = 0.5 * (q.segment<3>(0) + q.segment<3>(3));  // collapsed triangle
+      EXPECT_EQ(membrane_energy(corner(q, 0), corner(q, 1), corner(q, 2), rest, k),
+                membrane_element(corner(q, 0), corner(q, 1), corner(q, 2), rest, k, false, HessianKind::Exact).energy);
+      EXPECT_EQ(hinge_energy(corner(q, 0), corner(q, 1), corner(q, 2), corner(q, 3), 2.5e-6, 0.1),
+                hinge_element(corner(q, 0), corner(q, 1), corner(q, 2), corner(q, 3), 2.5e-6, 0.1, true, HessianKind::Exact).energy);
+    }
+  }
+}
+
 TEST(Bending, FlatHingeHasZeroAngleAndSignedFolds) {
   EXPECT_NEAR(dihedral_angle({0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, false).theta, 0.0, 1e-15);
   // Fold the second flap up by 60 degrees (about the edge): |theta| = 60 degrees.
@@ -155,6 +177,8 @@ TEST(Derivatives, AssembledEnergyWithEveryTerm) {
   const EnergyTerms terms = energy.evaluate(g.V, &g0, &H, HessianKind::Exact);
   ASSERT_GT(terms.contact, 0.0);
   ASSERT_GT(terms.stitches, 0.0);
+  // The energy alone (the line search's call) is the same to the last bit.
+  EXPECT_EQ(energy.evaluate(g.V, nullptr, nullptr, HessianKind::Exact).total(), terms.total());
   const Eigen::MatrixXd dense = Eigen::MatrixXd(H);
   const double h = 1e-7;
   VectorXd g_fd(g0.size());
