@@ -9,7 +9,7 @@
 
 #include "core/error.h"
 #include "sim/self_contact.h"
-#include "sim/sparse_cholesky.h"
+#include "sim/bisected_cholesky.h"
 
 namespace foldsketch {
 namespace {
@@ -127,7 +127,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   if (!(scale > 0.0)) scale = std::max(model.material.stretch_warp, model.material.stretch_weft) * std::sqrt(model.contact_area.sum());
   const double work_scale = scale * std::max(1e-3, (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm());
 
-  SparseCholesky cholesky;
+  BisectedCholesky cholesky;
   SparseMatrix A = energy.pattern();
   VectorXd velocity = VectorXd::Zero(3 * n);
   double h = settings.time_step;

@@ -1,7 +1,8 @@
 // Drapes a cloth model: backward Euler written as minimisation of the incremental potential,
 // solved by Newton with exact element Hessians and Levenberg-Marquardt damping (where the exact
 // Hessian is indefinite, projected membrane elements first: membrane_fallback), CHOLMOD (one
-// symbolic analysis) and a backtracking line search that never lets the energy rise.
+// symbolic analysis; the system bisected and its halves factorised on two cores,
+// BisectedCholesky) and a backtracking line search that never lets the energy rise.
 //
 // Static mode drives the drape to equilibrium with quasi-static implicit steps: each step
 // minimises E(x) + |x - x_n|^2_M / (2 h^2) from rest, and h grows while steps succeed, so the

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <tuple>
 #include <vector>
 #include <mutex>
 
@@ -43,16 +44,21 @@ cholmod_sparse view(const Eigen::SparseMatrix<double>& A) {
 // at 20K, a second OpenBLAS thread saves 5 % of the factorisation time and costs 9 % overall.
 // Both switches are process-wide library settings, looked up at run time so that a CHOLMOD
 // without OpenMP or a BLAS other than OpenBLAS simply lacks them.
+using SetInt = void (*)(int);
 void run_factorisation_on_one_thread() {
   static std::once_flag once;
   std::call_once(once, [] {
-    using SetInt = void (*)(int);
-    // max-active-levels 0: every OpenMP parallel region runs on the thread that meets it.
-    if (auto set_levels = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"))) set_levels(0);
     if (auto set_threads = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set_threads(1);
   });
+  // max-active-levels 0: every OpenMP parallel region runs on the thread that meets it. An
+  // OpenMP setting of the calling thread: a thread that did not make it spawns CHOLMOD's team
+  // of 4 (two factorisations at once on 2 cores then took 2.3x as long each).
+  static const auto set_levels = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
+  if (set_levels) set_levels(0);
 }
 } // namespace
+
+void keep_factorisation_on_this_thread() { run_factorisation_on_one_thread(); }
 
 struct SparseCholesky::State {
   cholmod_common common{};
@@ -86,15 +92,36 @@ struct SparseCholesky::State {
 SparseCholesky::SparseCholesky() : state_(std::make_unique<State>()) {}
 SparseCholesky::~SparseCholesky() = default;
 
-void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& A) {
+void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& A) { analyze_with(A, nullptr); }
+
+void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& A, const std::vector<int>& ordering) {
+  if (ordering.size() != static_cast<size_t>(A.rows())) throw ArgumentError("SparseCholesky: ordering has the wrong size");
+  analyze_with(A, &ordering);
+}
+
+void SparseCholesky::analyze_with(const Eigen::SparseMatrix<double>& A, const std::vector<int>* ordering) {
   if (!A.isCompressed()) throw ArgumentError("SparseCholesky: matrix must be compressed");
   const auto start = std::chrono::steady_clock::now();
+  run_factorisation_on_one_thread();
   if (state_->factor) cholmod_free_factor(&state_->factor, &state_->common);
   cholmod_sparse a = view(A);
-  state_->factor = cholmod_analyze(&a, &state_->common);
-  if (!state_->factor) {  // no METIS in this CHOLMOD: let it choose (AMD)
-    state_->common.nmethods = 0;
-    state_->factor = cholmod_analyze(&a, &state_->common);
+  cholmod_common& c = state_->common;
+  if (ordering) {
+    // As given: no postordering either, so that the factor's columns keep the given order.
+    const auto saved = std::make_tuple(c.nmethods, c.method[0].ordering, c.postorder);
+    c.nmethods = 1;
+    c.method[0].ordering = CHOLMOD_GIVEN;
+    c.postorder = 0;
+    state_->factor = cholmod_analyze_p(&a, const_cast<int*>(ordering->data()), nullptr, 0, &c);
+    std::tie(c.nmethods, c.method[0].ordering, c.postorder) = saved;
+    if (state_->factor && !std::equal(ordering->begin(), ordering->end(), static_cast<const int*>(state_->factor->Perm)))
+      throw std::logic_error("SparseCholesky: CHOLMOD changed the given ordering");
+  } else {
+    state_->factor = cholmod_analyze(&a, &c);
+    if (!state_->factor) {  // no METIS in this CHOLMOD: let it choose (AMD)
+      c.nmethods = 0;
+      state_->factor = cholmod_analyze(&a, &c);
+    }
   }
   if (!state_->factor) throw std::runtime_error("CHOLMOD could not analyse the system");
   build_permuted(A);
@@ -105,6 +132,7 @@ void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& A) {
 bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& A) {
   if (!state_->factor) analyze(A);
   const auto start = std::chrono::steady_clock::now();
+  run_factorisation_on_one_thread();
   if (A.nonZeros() != static_cast<Eigen::Index>(state_->destination.size()))
     throw ArgumentError("SparseCholesky::factorize: the matrix's pattern is not the analysed one");
   cholmod_sparse* s = state_->permuted;
@@ -166,7 +194,37 @@ void SparseCholesky::build_permuted(const Eigen::SparseMatrix<double>& A) {
 
 bool SparseCholesky::factorized() const { return state_->numeric; }
 
-VectorXd SparseCholesky::solve(const VectorXd& b) const {
+VectorXd SparseCholesky::solve(const VectorXd& b) const { return solve_system(CHOLMOD_A, b); }
+VectorXd SparseCholesky::solve_lower(const VectorXd& b) const { return solve_system(CHOLMOD_L, b); }
+VectorXd SparseCholesky::solve_upper(const VectorXd& b) const { return solve_system(CHOLMOD_Lt, b); }
+
+Eigen::MatrixXd SparseCholesky::trailing_block(int m) const {
+  if (!state_->numeric) throw std::logic_error("SparseCholesky::trailing_block before a successful factorisation");
+  const cholmod_factor& L = *state_->factor;
+  const auto n = static_cast<int>(L.n);
+  if (m < 0 || m > n) throw ArgumentError("SparseCholesky::trailing_block: block larger than the factor");
+  const int first = n - m;
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(m, m);
+  const auto* super = static_cast<const int*>(L.super);
+  const auto* pi = static_cast<const int*>(L.pi);
+  const auto* px = static_cast<const int*>(L.px);
+  const auto* rows = static_cast<const int*>(L.s);
+  const auto* x = static_cast<const double*>(L.x);
+  // Supernode k holds columns super[k] .. super[k+1]-1 as a dense column-major block over its
+  // row indices rows[pi[k] .. pi[k+1]-1], the diagonal block first.
+  for (size_t k = 0; k < L.nsuper; ++k) {
+    if (super[k + 1] <= first) continue;
+    const int row_count = pi[k + 1] - pi[k];
+    for (int col = std::max(super[k], first); col < super[k + 1]; ++col) {
+      const int j = col - super[k];
+      for (int r = j; r < row_count; ++r)
+        out(rows[pi[k] + r] - first, col - first) = x[px[k] + static_cast<long>(j) * row_count + r];
+    }
+  }
+  return out;
+}
+
+VectorXd SparseCholesky::solve_system(int system, const VectorXd& b) const {
   if (!state_->numeric) throw std::logic_error("SparseCholesky::solve before a successful factorisation");
   const auto start = std::chrono::steady_clock::now();
   cholmod_dense rhs{};
@@ -177,7 +235,7 @@ VectorXd SparseCholesky::solve(const VectorXd& b) const {
   rhs.x = const_cast<double*>(b.data());
   rhs.xtype = CHOLMOD_REAL;
   rhs.dtype = CHOLMOD_DOUBLE;
-  cholmod_dense* x = cholmod_solve(CHOLMOD_A, state_->factor, &rhs, &state_->common);
+  cholmod_dense* x = cholmod_solve(system, state_->factor, &rhs, &state_->common);
   VectorXd out = Eigen::Map<VectorXd>(static_cast<double*>(x->x), b.size());
   cholmod_free_dense(&x, &state_->common);
   solve_seconds_ += seconds_since(start);

@@ -1,0 +1,278 @@
+#include "sim/bisected_cholesky.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <exception>
+#include <thread>
+#include <vector>
+
+#include <cholmod.h>
+
+#include "core/error.h"
+#include "sim/sparse_cholesky.h"
+
+// BLAS and LAPACK (OpenBLAS on Debian, CHOLMOD's own): the separator's dense products and
+// factorisation. Fortran calling convention; the trailing lengths are the hidden lengths of the
+// character arguments.
+extern "C" {
+void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
+            const int* lda, const double* beta, double* c, const int* ldc, size_t, size_t);
+void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info, size_t);
+}
+
+namespace foldsketch {
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+cholmod_sparse lower_view(const Eigen::SparseMatrix<double>& A) {
+  cholmod_sparse s{};
+  s.nrow = static_cast<size_t>(A.rows());
+  s.ncol = static_cast<size_t>(A.cols());
+  s.nzmax = static_cast<size_t>(A.nonZeros());
+  s.p = const_cast<int*>(A.outerIndexPtr());
+  s.i = const_cast<int*>(A.innerIndexPtr());
+  s.x = const_cast<double*>(A.valuePtr());
+  s.stype = -1;
+  s.itype = CHOLMOD_INT;
+  s.xtype = CHOLMOD_REAL;
+  s.dtype = CHOLMOD_DOUBLE;
+  s.sorted = 1;
+  s.packed = 1;
+  return s;
+}
+
+// One half: M = A's principal submatrix on its own unknowns and the separator's (local index:
+// the half's unknowns in ascending order, then the separator's), lower storage.
+struct Half {
+  std::vector<int> unknowns;        // A's rows, ascending
+  Eigen::SparseMatrix<double> M;
+  std::vector<long> from;           // per stored value of M, the value index in A
+  std::vector<int> factor_rows;     // per factor position, A's row (the separator's last)
+  SparseCholesky cholesky;
+  Eigen::MatrixXd L22;              // the factor's separator block
+};
+} // namespace
+
+struct BisectedCholesky::State {
+  cholmod_common common{};
+  bool analysed = false;
+  bool split = false;
+  bool numeric = false;
+  SparseCholesky whole;
+  std::array<Half, 2> halves;
+  std::vector<int> separator;       // A's rows, ascending
+  std::vector<std::array<long, 3>> separator_values;  // (value index in A, row, column) of A_SS's lower triangle
+  Eigen::MatrixXd schur;            // Cholesky factor of the separator's Schur complement (lower)
+  State() { cholmod_start(&common); }
+  ~State() { cholmod_finish(&common); }
+};
+
+BisectedCholesky::BisectedCholesky(const BisectedSettings& settings) : state_(std::make_unique<State>()), settings_(settings) {}
+BisectedCholesky::~BisectedCholesky() = default;
+
+bool BisectedCholesky::split() const { return state_->split; }
+int BisectedCholesky::separator_size() const { return static_cast<int>(state_->separator.size()); }
+bool BisectedCholesky::factorized() const { return state_->numeric; }
+
+void BisectedCholesky::analyze(const Eigen::SparseMatrix<double>& A) {
+  if (!A.isCompressed()) throw ArgumentError("BisectedCholesky: matrix must be compressed");
+  const auto start = std::chrono::steady_clock::now();
+  State& st = *state_;
+  st.numeric = false;
+  st.split = false;
+  st.analysed = true;
+  const int n = static_cast<int>(A.rows());
+  const bool two_cores = std::thread::hardware_concurrency() >= 2;
+  std::vector<int> part(static_cast<size_t>(n), 0);
+  if (two_cores && n >= settings_.min_unknowns) {
+    keep_factorisation_on_this_thread();
+    cholmod_sparse a = lower_view(A);
+    const long separator = cholmod_bisect(&a, nullptr, 0, /*compress=*/1, part.data(), &st.common);
+    const auto left = std::count(part.begin(), part.end(), 0), right = std::count(part.begin(), part.end(), 1);
+    st.split = st.common.status == CHOLMOD_OK && separator > 0 && left > 0 && right > 0 &&
+               static_cast<double>(separator) <= settings_.max_separator_fraction * n;
+  }
+  if (!st.split) {
+    st.whole.analyze(A);
+    analyze_seconds_ += seconds_since(start);
+    return;
+  }
+
+  st.separator.clear();
+  for (Half& h : st.halves) h.unknowns.clear();
+  for (int i = 0; i < n; ++i)
+    (part[static_cast<size_t>(i)] == 2 ? st.separator : st.halves[static_cast<size_t>(part[static_cast<size_t>(i)])].unknowns).push_back(i);
+  const int s = static_cast<int>(st.separator.size());
+  std::vector<int> separator_index(static_cast<size_t>(n), -1);
+  for (int k = 0; k < s; ++k) separator_index[static_cast<size_t>(st.separator[static_cast<size_t>(k)])] = k;
+  // A_SS's lower triangle, in separator indices.
+  st.separator_values.clear();
+  for (int j = 0; j < n; ++j)
+    for (int q = A.outerIndexPtr()[j]; q < A.outerIndexPtr()[j + 1]; ++q) {
+      const int i = A.innerIndexPtr()[q];
+      if (i < j) continue;
+      const int r = separator_index[static_cast<size_t>(i)], c = separator_index[static_cast<size_t>(j)];
+      if (r >= 0 && c >= 0) st.separator_values.push_back({q, std::max(r, c), std::min(r, c)});
+    }
+
+  for (size_t side = 0; side < 2; ++side) {
+    Half& h = st.halves[side];
+    const int m = static_cast<int>(h.unknowns.size());
+    std::vector<int> local(static_cast<size_t>(n), -1);
+    for (int k = 0; k < m; ++k) local[static_cast<size_t>(h.unknowns[static_cast<size_t>(k)])] = k;
+    for (int k = 0; k < s; ++k) local[static_cast<size_t>(st.separator[static_cast<size_t>(k)])] = m + k;
+    // M's lower triangle; each value carries its index in A until the pattern is built.
+    std::vector<Eigen::Triplet<double>> entries;
+    std::vector<Eigen::Triplet<double>> interior;  // the half's own block, for its ordering
+    for (int j = 0; j < n; ++j)
+      for (int q = A.outerIndexPtr()[j]; q < A.outerIndexPtr()[j + 1]; ++q) {
+        const int i = A.innerIndexPtr()[q];
+        if (i < j) continue;
+        const int r = local[static_cast<size_t>(i)], c = local[static_cast<size_t>(j)];
+        if (r < 0 || c < 0) {
+          if ((r < 0) != (c < 0) && part[static_cast<size_t>(i)] != 2 && part[static_cast<size_t>(j)] != 2)
+            throw std::logic_error("BisectedCholesky: the two halves are coupled");
+          continue;
+        }
+        entries.emplace_back(std::max(r, c), std::min(r, c), static_cast<double>(q));
+        if (r < m && c < m) interior.emplace_back(std::max(r, c), std::min(r, c), 1.0);
+      }
+    h.M = Eigen::SparseMatrix<double>(m + s, m + s);
+    h.M.setFromTriplets(entries.begin(), entries.end());
+    h.M.makeCompressed();
+    h.from.resize(static_cast<size_t>(h.M.nonZeros()));
+    for (long k = 0; k < h.M.nonZeros(); ++k) h.from[static_cast<size_t>(k)] = static_cast<long>(h.M.valuePtr()[k]);
+    // Fill-reducing ordering of the half's own unknowns (METIS), then the separator.
+    Eigen::SparseMatrix<double> own(m, m);
+    own.setFromTriplets(interior.begin(), interior.end());
+    own.makeCompressed();
+    std::vector<int> order(static_cast<size_t>(m));
+    cholmod_sparse o = lower_view(own);
+    if (!cholmod_metis(&o, nullptr, 0, /*postorder=*/1, order.data(), &st.common)) {
+      // No METIS in this CHOLMOD: the natural order (still correct, more fill).
+      for (int k = 0; k < m; ++k) order[static_cast<size_t>(k)] = k;
+    }
+    std::vector<int> ordering = order;
+    for (int k = 0; k < s; ++k) ordering.push_back(m + k);
+    h.factor_rows.resize(ordering.size());
+    for (size_t k = 0; k < ordering.size(); ++k) {
+      const int l = ordering[k];
+      h.factor_rows[k] = l < m ? h.unknowns[static_cast<size_t>(l)] : st.separator[static_cast<size_t>(l - m)];
+    }
+    h.cholesky.analyze(h.M, ordering);
+  }
+  analyze_seconds_ += seconds_since(start);
+}
+
+bool BisectedCholesky::factorize(const Eigen::SparseMatrix<double>& A) {
+  State& st = *state_;
+  if (!st.analysed) analyze(A);
+  const auto start = std::chrono::steady_clock::now();
+  ++factorizations_;
+  if (!st.split) {
+    st.numeric = st.whole.factorize(A);
+    factorize_seconds_ += seconds_since(start);
+    return st.numeric;
+  }
+  st.numeric = false;
+  const double* values = A.valuePtr();
+  const int s = static_cast<int>(st.separator.size());
+  // Each half: its values, its factorisation, and its separator block's product L22 L22^T.
+  const auto work = [&](Half& h, Eigen::MatrixXd& product) {
+    keep_factorisation_on_this_thread();
+    if (h.M.nonZeros() != static_cast<Eigen::Index>(h.from.size()) || A.nonZeros() <= 0)
+      throw std::logic_error("BisectedCholesky: factorize before analyze");
+    double* m = h.M.valuePtr();
+    for (size_t k = 0; k < h.from.size(); ++k) m[k] = values[h.from[k]];
+    if (!h.cholesky.factorize(h.M)) return false;
+    h.L22 = h.cholesky.trailing_block(s);
+    product = Eigen::MatrixXd::Zero(s, s);
+    const char lower = 'L', no = 'N';
+    const double one = 1.0, zero = 0.0;
+    dsyrk_(&lower, &no, &s, &s, &one, h.L22.data(), &s, &zero, product.data(), &s, 1, 1);
+    return true;
+  };
+  std::array<Eigen::MatrixXd, 2> products;
+  bool ok1 = false;
+  std::exception_ptr error;
+  std::thread other([&] {
+    try {
+      ok1 = work(st.halves[1], products[1]);
+    } catch (...) {
+      error = std::current_exception();
+    }
+  });
+  bool ok0 = false;
+  try {
+    ok0 = work(st.halves[0], products[0]);
+  } catch (...) {
+    other.join();
+    throw;
+  }
+  other.join();
+  if (error) std::rethrow_exception(error);
+  if (ok0 && ok1) {
+    // S = L22_0 L22_0^T + L22_1 L22_1^T - A_SS (lower triangle), then S = C C^T.
+    st.schur = products[0] + products[1];
+    for (const auto& [q, r, c] : st.separator_values) st.schur(r, c) -= values[q];
+    const char lower = 'L';
+    int info = 0;
+    dpotrf_(&lower, &s, st.schur.data(), &s, &info, 1);
+    st.numeric = info == 0;
+  }
+  factorize_seconds_ += seconds_since(start);
+  return st.numeric;
+}
+
+VectorXd BisectedCholesky::solve(const VectorXd& b) const {
+  const State& st = *state_;
+  if (!st.numeric) throw std::logic_error("BisectedCholesky::solve before a successful factorisation");
+  if (!st.split) return st.whole.solve(b);
+  const auto start = std::chrono::steady_clock::now();
+  const int s = static_cast<int>(st.separator.size());
+  // Forward: z_i = L_i^-1 [b_i; 0]; the separator part of z_i is -L22^-1 A_Si A_ii^-1 b_i... so
+  // A_Si A_ii^-1 b_i = -L22 z_iS.
+  std::array<VectorXd, 2> z;
+  const auto forward = [&](int side) {
+    const Half& h = st.halves[static_cast<size_t>(side)];
+    const int m = static_cast<int>(h.unknowns.size());
+    VectorXd y = VectorXd::Zero(m + s);
+    for (int k = 0; k < m; ++k) y(k) = b(h.factor_rows[static_cast<size_t>(k)]);
+    z[static_cast<size_t>(side)] = h.cholesky.solve_lower(y);
+  };
+  std::thread other(forward, 1);
+  forward(0);
+  other.join();
+  VectorXd r(s);
+  for (int k = 0; k < s; ++k) r(k) = b(st.separator[static_cast<size_t>(k)]);
+  for (size_t side = 0; side < 2; ++side) {
+    const Half& h = st.halves[side];
+    r += h.L22.triangularView<Eigen::Lower>() * z[side].tail(s);
+  }
+  // x_S = S^-1 r.
+  const auto C = st.schur.triangularView<Eigen::Lower>();
+  VectorXd xs = C.solve(r);
+  C.transpose().solveInPlace(xs);
+  // Backward: L_i^T [u; v] = [z_i own; L22^T x_S] gives v = x_S and u the half's unknowns.
+  VectorXd x(b.size());
+  for (int k = 0; k < s; ++k) x(st.separator[static_cast<size_t>(k)]) = xs(k);
+  const auto backward = [&](int side) {
+    const Half& h = st.halves[static_cast<size_t>(side)];
+    const int m = static_cast<int>(h.unknowns.size());
+    VectorXd w(m + s);
+    w.head(m) = z[static_cast<size_t>(side)].head(m);
+    w.tail(s) = h.L22.transpose().triangularView<Eigen::Upper>() * xs;
+    const VectorXd u = h.cholesky.solve_upper(w);
+    for (int k = 0; k < m; ++k) x(h.factor_rows[static_cast<size_t>(k)]) = u(k);
+  };
+  std::thread other_back(backward, 1);
+  backward(0);
+  other_back.join();
+  solve_seconds_ += seconds_since(start);
+  return x;
+}
+
+} // namespace foldsketch
