@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <exception>
 #include <thread>
 #include <vector>
@@ -10,6 +9,7 @@
 #include <cholmod.h>
 
 #include "core/error.h"
+#include "sim/cholmod_view.h"
 #include "sim/sparse_cholesky.h"
 
 // BLAS and LAPACK (OpenBLAS on Debian, CHOLMOD's own): the separator's dense products and
@@ -23,27 +23,6 @@ void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* inf
 
 namespace foldsketch {
 namespace {
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-cholmod_sparse lower_view(const Eigen::SparseMatrix<double>& A) {
-  cholmod_sparse s{};
-  s.nrow = static_cast<size_t>(A.rows());
-  s.ncol = static_cast<size_t>(A.cols());
-  s.nzmax = static_cast<size_t>(A.nonZeros());
-  s.p = const_cast<int*>(A.outerIndexPtr());
-  s.i = const_cast<int*>(A.innerIndexPtr());
-  s.x = const_cast<double*>(A.valuePtr());
-  s.stype = -1;
-  s.itype = CHOLMOD_INT;
-  s.xtype = CHOLMOD_REAL;
-  s.dtype = CHOLMOD_DOUBLE;
-  s.sorted = 1;
-  s.packed = 1;
-  return s;
-}
-
 // One half: M = A's principal submatrix on its own unknowns and the separator's (local index:
 // the half's unknowns in ascending order, then the separator's), lower storage.
 struct Half {
@@ -59,6 +38,7 @@ struct Half {
 struct BisectedCholesky::State {
   cholmod_common common{};
   bool analysed = false;
+  Eigen::Index nonzeros = 0;        // of the analysed pattern
   bool split = false;
   bool numeric = false;
   SparseCholesky whole;
@@ -84,12 +64,13 @@ void BisectedCholesky::analyze(const Eigen::SparseMatrix<double>& A) {
   st.numeric = false;
   st.split = false;
   st.analysed = true;
+  st.nonzeros = A.nonZeros();
   const int n = static_cast<int>(A.rows());
   const bool two_cores = std::thread::hardware_concurrency() >= 2;
   std::vector<int> part(static_cast<size_t>(n), 0);
   if (two_cores && n >= settings_.min_unknowns) {
     keep_factorisation_on_this_thread();
-    cholmod_sparse a = lower_view(A);
+    cholmod_sparse a = cholmod_lower_view(A);
     const long separator = cholmod_bisect(&a, nullptr, 0, /*compress=*/1, part.data(), &st.common);
     const auto left = std::count(part.begin(), part.end(), 0), right = std::count(part.begin(), part.end(), 1);
     st.split = st.common.status == CHOLMOD_OK && separator > 0 && left > 0 && right > 0 &&
@@ -150,7 +131,7 @@ void BisectedCholesky::analyze(const Eigen::SparseMatrix<double>& A) {
     own.setFromTriplets(interior.begin(), interior.end());
     own.makeCompressed();
     std::vector<int> order(static_cast<size_t>(m));
-    cholmod_sparse o = lower_view(own);
+    cholmod_sparse o = cholmod_lower_view(own);
     if (!cholmod_metis(&o, nullptr, 0, /*postorder=*/1, order.data(), &st.common)) {
       // No METIS in this CHOLMOD: the natural order (still correct, more fill).
       for (int k = 0; k < m; ++k) order[static_cast<size_t>(k)] = k;
@@ -170,6 +151,8 @@ void BisectedCholesky::analyze(const Eigen::SparseMatrix<double>& A) {
 bool BisectedCholesky::factorize(const Eigen::SparseMatrix<double>& A) {
   State& st = *state_;
   if (!st.analysed) analyze(A);
+  if (st.split && A.nonZeros() != st.nonzeros)
+    throw ArgumentError("BisectedCholesky::factorize: the matrix's pattern is not the analysed one");
   const auto start = std::chrono::steady_clock::now();
   ++factorizations_;
   if (!st.split) {
@@ -182,9 +165,6 @@ bool BisectedCholesky::factorize(const Eigen::SparseMatrix<double>& A) {
   const int s = static_cast<int>(st.separator.size());
   // Each half: its values, its factorisation, and its separator block's product L22 L22^T.
   const auto work = [&](Half& h, Eigen::MatrixXd& product) {
-    keep_factorisation_on_this_thread();
-    if (h.M.nonZeros() != static_cast<Eigen::Index>(h.from.size()) || A.nonZeros() <= 0)
-      throw std::logic_error("BisectedCholesky: factorize before analyze");
     double* m = h.M.valuePtr();
     for (size_t k = 0; k < h.from.size(); ++k) m[k] = values[h.from[k]];
     if (!h.cholesky.factorize(h.M)) return false;
@@ -233,8 +213,8 @@ VectorXd BisectedCholesky::solve(const VectorXd& b) const {
   if (!st.split) return st.whole.solve(b);
   const auto start = std::chrono::steady_clock::now();
   const int s = static_cast<int>(st.separator.size());
-  // Forward: z_i = L_i^-1 [b_i; 0]; the separator part of z_i is -L22^-1 A_Si A_ii^-1 b_i... so
-  // A_Si A_ii^-1 b_i = -L22 z_iS.
+  // Forward: z_i = L_i^-1 [b_i; 0]. Its separator part is z_iS = -L22^-1 A_Si A_ii^-1 b_i, so
+  // r = b_S - sum_i A_Si A_ii^-1 b_i = b_S + sum_i L22 z_iS.
   std::array<VectorXd, 2> z;
   const auto forward = [&](int side) {
     const Half& h = st.halves[static_cast<size_t>(side)];

@@ -10,30 +10,13 @@
 #include <dlfcn.h>
 
 #include "core/error.h"
+#include "sim/cholmod_view.h"
 
 namespace foldsketch {
 namespace {
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using SetInt = void (*)(int);
+} // namespace
 
-// A CHOLMOD view (no copy) of an Eigen compressed column matrix, read as symmetric lower.
-cholmod_sparse view(const Eigen::SparseMatrix<double>& A) {
-  cholmod_sparse s{};
-  s.nrow = static_cast<size_t>(A.rows());
-  s.ncol = static_cast<size_t>(A.cols());
-  s.nzmax = static_cast<size_t>(A.nonZeros());
-  s.p = const_cast<int*>(A.outerIndexPtr());
-  s.i = const_cast<int*>(A.innerIndexPtr());
-  s.x = const_cast<double*>(A.valuePtr());
-  s.stype = -1;
-  s.itype = CHOLMOD_INT;
-  s.xtype = CHOLMOD_REAL;
-  s.dtype = CHOLMOD_DOUBLE;
-  s.sorted = 1;
-  s.packed = 1;
-  return s;
-}
 // Runs the factorisation on the calling thread. Debian's CHOLMOD 3 (SuiteSparse 5.12) is built
 // with OpenMP and a fixed team of CHOLMOD_OMP_NUM_THREADS = 4 for its copy and scatter loops,
 // and OpenBLAS parks its own threads in a sched_yield loop between BLAS calls; on a 2-core
@@ -42,10 +25,9 @@ cholmod_sparse view(const Eigen::SparseMatrix<double>& A) {
 // (bench/drape_bench --starts warm, 123 Newton iterations): 12.75 s as shipped, 7.29 s with
 // CHOLMOD's OpenMP off, 6.71 s with OpenBLAS on one thread as well (system time 20 s -> 0.4 s);
 // at 20K, a second OpenBLAS thread saves 5 % of the factorisation time and costs 9 % overall.
-// Both switches are process-wide library settings, looked up at run time so that a CHOLMOD
-// without OpenMP or a BLAS other than OpenBLAS simply lacks them.
-using SetInt = void (*)(int);
-void run_factorisation_on_one_thread() {
+// OpenBLAS's switch is process-wide, OpenMP's per thread (below); both are looked up at run
+// time so that a CHOLMOD without OpenMP or a BLAS other than OpenBLAS simply lacks them.
+void keep_factorisation_on_this_thread() {
   static std::once_flag once;
   std::call_once(once, [] {
     if (auto set_threads = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set_threads(1);
@@ -56,9 +38,6 @@ void run_factorisation_on_one_thread() {
   static const auto set_levels = reinterpret_cast<SetInt>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
   if (set_levels) set_levels(0);
 }
-} // namespace
-
-void keep_factorisation_on_this_thread() { run_factorisation_on_one_thread(); }
 
 struct SparseCholesky::State {
   cholmod_common common{};
@@ -73,7 +52,7 @@ struct SparseCholesky::State {
   cholmod_sparse* permuted = nullptr;
   std::vector<long> destination;
   State() {
-    run_factorisation_on_one_thread();
+    keep_factorisation_on_this_thread();
     cholmod_start(&common);
     common.supernodal = CHOLMOD_SUPERNODAL;
     // METIS beat AMD on cloth Hessians here (design notes, section 5).
@@ -102,9 +81,9 @@ void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& A, const std::ve
 void SparseCholesky::analyze_with(const Eigen::SparseMatrix<double>& A, const std::vector<int>* ordering) {
   if (!A.isCompressed()) throw ArgumentError("SparseCholesky: matrix must be compressed");
   const auto start = std::chrono::steady_clock::now();
-  run_factorisation_on_one_thread();
+  keep_factorisation_on_this_thread();
   if (state_->factor) cholmod_free_factor(&state_->factor, &state_->common);
-  cholmod_sparse a = view(A);
+  cholmod_sparse a = cholmod_lower_view(A);
   cholmod_common& c = state_->common;
   if (ordering) {
     // As given: no postordering either, so that the factor's columns keep the given order.
@@ -132,7 +111,7 @@ void SparseCholesky::analyze_with(const Eigen::SparseMatrix<double>& A, const st
 bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& A) {
   if (!state_->factor) analyze(A);
   const auto start = std::chrono::steady_clock::now();
-  run_factorisation_on_one_thread();
+  keep_factorisation_on_this_thread();
   if (A.nonZeros() != static_cast<Eigen::Index>(state_->destination.size()))
     throw ArgumentError("SparseCholesky::factorize: the matrix's pattern is not the analysed one");
   cholmod_sparse* s = state_->permuted;
