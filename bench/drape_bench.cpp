@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
   app.add_flag("--trace", trace,
                "print every Newton iteration of the timed solves on stderr (factorisations so far, residual, step, damping)");
   CLI11_PARSE(app, argc, argv);
-  const DrapeProgress tracer = [](const DrapeStats& s) {
+  const DrapeProgress tracer = [](const DrapeStats& s, const MatrixX3d&) {
     std::fprintf(stderr, "%5d factorisations %5d residual %.3e step %.3f length %.2e damping %.1e\n", s.newton_iterations,
                  s.factorizations, s.residual, s.step_fraction, s.step_length, s.damping);
   };

@@ -122,7 +122,7 @@ int main(int argc, char** argv) {
       settings.bending_hessian = hessian_kind(bending_hessian);
     if (!membrane_hessian.empty()) settings.membrane_hessian = hessian_kind(membrane_hessian);
     const bool terminal = ::isatty(STDERR_FILENO);
-    const DrapeResult result = solve_drape(model, garment.V, settings, [&](const DrapeStats& s) {
+    const DrapeResult result = solve_drape(model, garment.V, settings, [&](const DrapeStats& s, const MatrixX3d&) {
       if (trace)
         std::fprintf(stderr, "iteration %d residual %.3e energy %.6e step %.3g move %.3g mm damping %.3g factorisations %d time %.2f s\n",
                      s.newton_iterations, s.residual, s.energy.total(), s.step_fraction, 1000 * s.step_length, s.damping,

@@ -175,12 +175,12 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
     const double value = evaluate(y, nullptr, nullptr).total() + inertia(y, nullptr);
     return std::isfinite(value) ? value : std::numeric_limits<double>::infinity();
   };
-  const auto report = [&] {
+  const auto report = [&](const MatrixX3d& drape) {
     stats.factorizations = cholesky.factorizations();
     stats.seconds_factorization = cholesky.factorize_seconds() + cholesky.analyze_seconds();
     stats.seconds_solve = cholesky.solve_seconds();
     stats.seconds_total = since(start);
-    if (progress) progress(stats);
+    if (progress) progress(stats, drape);
   };
 
   // One damped Newton iteration on Phi from x, given Phi's gradient g there and E's Hessian
@@ -348,7 +348,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
       damping = 1.0 / (h * h);
     }
     ++stats.steps;
-    report();
+    report(x);
   }
   if (!x.allFinite()) {
     x = initial;
@@ -359,7 +359,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   stats.max_strain = max_strain(model, result.V);
   stats.max_penetration = max_penetration(model, result.V);
   stats.min_self_distance = min_self_distance(model, result.V);
-  report();
+  report(result.V);
   return result;
 }
 

@@ -121,7 +121,8 @@ struct DrapeResult {
   DrapeStats stats;
 };
 
-using DrapeProgress = std::function<void(const DrapeStats&)>;
+// Called after every accepted step with the stats so far and the drape.
+using DrapeProgress = std::function<void(const DrapeStats&, const MatrixX3d&)>;
 
 DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const DrapeSettings& settings,
                         const DrapeProgress& progress = {});

@@ -1,4 +1,7 @@
 // The drape solver's iteration control (the physics it solves is tested in physics_test.cpp).
+#include <algorithm>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "samples/grid_garment.h"
@@ -57,6 +60,27 @@ TEST(DrapeSolver, MembraneFallbackLeavesStartsNearTheRestShapeAlone) {
   ASSERT_TRUE(r.stats.converged) << r.stats.message;
   EXPECT_GT(r.stats.factorizations, r.stats.newton_iterations) << "no factorisation was refused: the case tests nothing";
   EXPECT_EQ(r.stats.projected_iterations, 0);
+}
+
+// The progress callback sees every accepted step's drape, so a caller can follow the drape
+// along the solve (drape_bench --trajectory measures what stopping early would cost): one call
+// per accepted step with the stats so far, and a last one with the result.
+TEST(DrapeSolver, ProgressSeesTheDrapeOfEveryStep) {
+  const SqueezedSheet s = squeezed_sheet(0.6);
+  std::vector<MatrixX3d> seen;
+  std::vector<int> iterations;
+  const DrapeResult r = solve_drape(s.model, s.garment.V, DrapeSettings{}, [&](const DrapeStats& stats, const MatrixX3d& x) {
+    seen.push_back(x);
+    iterations.push_back(stats.newton_iterations);
+  });
+  ASSERT_TRUE(r.stats.converged) << r.stats.message;
+  ASSERT_EQ(seen.size(), static_cast<size_t>(r.stats.steps) + 1);
+  EXPECT_TRUE(std::is_sorted(iterations.begin(), iterations.end()));
+  EXPECT_EQ(iterations.back(), r.stats.newton_iterations);
+  EXPECT_EQ(seen.back(), r.V);
+  EXPECT_EQ(seen[seen.size() - 2], r.V) << "the last step's drape is the result";
+  EXPECT_GT((seen.front() - s.garment.V).norm(), 0.0) << "the first call comes after the first step";
+  for (const MatrixX3d& x : seen) EXPECT_EQ(x.rows(), s.garment.V.rows());
 }
 
 } // namespace
