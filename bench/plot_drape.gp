@@ -1,19 +1,24 @@
 # Time against error and time against size, from drape_bench's CSVs: cold starts (csv) and,
-# when given, warm starts (warm).
-# Usage: gnuplot -e "csv='bench/drape_bench.csv'; warm='bench/drape_bench_warm.csv'; out='bench/drape_bench.png'" bench/plot_drape.gp
+# when given, warm starts (warm); with traj (drape_bench --trajectory), a third panel: the error
+# along each solve, i.e. what stopping it at that time would have cost.
+# Usage: gnuplot -e "csv='bench/drape_bench.csv'; warm='bench/drape_bench_warm.csv'; traj='bench/drape_trajectory.csv'; out='bench/drape_bench.png'" bench/plot_drape.gp
+# (sizes='4836 10080 19908' names the triangle counts of traj to draw; those are the default)
 if (!exists("warm")) warm = ''
+if (!exists("traj")) traj = ''
+if (!exists("sizes")) sizes = '4836 10080 19908'
 set datafile separator ','
 # The warm-start lines, appended to each plot when there is a warm CSV.
 warm_error = warm eq '' ? '' : sprintf(", '%s' using ($8 > 0 ? $8 : 1e-4):3 skip 1 every 2::0 with linespoints dashtype 2 title 'accurate, warm', '%s' using ($8 > 0 ? $8 : 1e-4):3 skip 1 every 2::1 with linespoints dashtype 2 title 'fast, warm'", warm, warm)
 warm_size = warm eq '' ? '' : sprintf(", '%s' using 1:3 skip 1 every 2::0 with linespoints dashtype 2 title 'accurate, warm', '%s' using 1:3 skip 1 every 2::1 with linespoints dashtype 2 title 'fast, warm'", warm, warm)
-set terminal pngcairo size 1100,450 font ',10'
+set terminal pngcairo size (traj eq '' ? 1100 : 1650),450 font ',10'
 set output out
-set multiplot layout 1,2
+set multiplot layout 1,(traj eq '' ? 2 : 3)
 set logscale xy
 set grid
 # Keep points off the frame (log axes autoscale to the data).
 set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05
 set key top left
+set format x '10^{%L}'
 set title 'Skirt drape: wall time against error (vs tight reference)'
 set xlabel 'mean vertex error [mm]'
 set ylabel 'median wall time [s]'
@@ -21,9 +26,28 @@ set ylabel 'median wall time [s]'
 # preset and the points of a preset join into one line (a 1/0 filter would break the line).
 plot csv using ($8 > 0 ? $8 : 1e-4):3 skip 1 every 2::0 with linespoints title 'accurate, cold', \
      csv using ($8 > 0 ? $8 : 1e-4):3 skip 1 every 2::1 with linespoints title 'fast, cold' @warm_error
+set format x '%g'
 set title 'Skirt drape: wall time against size'
 set xlabel 'triangles'
 set ylabel 'median wall time [s]'
 plot csv using 1:3 skip 1 every 2::0 with linespoints title 'accurate, cold', \
      csv using 1:3 skip 1 every 2::1 with linespoints title 'fast, cold' @warm_size
+if (traj ne '') {
+  set title 'Skirt drape: error along the solve (accurate preset)'
+  set xlabel 'wall time [s]'
+  set ylabel 'mean vertex distance to the reference [mm]'
+  unset logscale x
+  set logscale y
+  set format y '%g'
+  set xrange [0:*]
+  set offsets 0, 0, graph 0.05, graph 0.05
+  set key top right
+  # One line per start and size; the rows of one solve are contiguous, so filtering the others
+  # out (1/0) leaves each line whole.
+  plot for [n in sizes] traj using (strcol(1) eq 'cold' && $2 == n + 0 ? $5 : 1/0):($7 > 1e-4 ? $7 : 1e-4) skip 1 \
+         with lines title sprintf('cold, %s triangles', n), \
+       for [n in sizes] traj using (strcol(1) eq 'warm' && $2 == n + 0 ? $5 : 1/0):($7 > 1e-4 ? $7 : 1e-4) skip 1 \
+         with lines dashtype 2 title sprintf('warm, %s triangles', n), \
+       2 with lines linecolor 'gray' dashtype 3 title '2 mm'
+}
 unset multiplot
