@@ -121,7 +121,8 @@ struct DrapeResult {
   DrapeStats stats;
 };
 
-// Called after every accepted step with the stats so far and the drape.
+// Called after every accepted step with the stats so far and the drape, and once more at the
+// end with the final stats and the result's drape.
 using DrapeProgress = std::function<void(const DrapeStats&, const MatrixX3d&)>;
 
 DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const DrapeSettings& settings,
