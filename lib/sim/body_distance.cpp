@@ -26,6 +26,18 @@ using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 // plane by more than this fraction of the edge length (flat edges are not concave: there the
 // closest point moves continuously).
 constexpr double kConcaveTolerance = 1e-9;
+
+// The feature of triangle (a, b, c) a closest point lies on (closest_point_on_triangle's
+// numbering): inside the face, or the unit direction of an edge (zero at a corner).
+void set_feature(int feature, const Vector3d& a, const Vector3d& b, const Vector3d& c, bool& on_face, Vector3d& edge) {
+  on_face = feature == 0;
+  edge.setZero();
+  if (feature >= 1 && feature <= 3) {
+    const Vector3d& from = feature == 1 ? a : feature == 2 ? b : c;
+    const Vector3d& to = feature == 1 ? b : feature == 2 ? c : a;
+    edge = (to - from).normalized();
+  }
+}
 } // namespace
 
 struct BodyDistance::Tree {
@@ -95,6 +107,11 @@ BodyPoint BodyDistance::at(const Vector3d& p) const {
   // corner) the offset direction is the better normal for the penalty force.
   const double unsigned_distance = offset.norm();
   out.distance = offset.dot(out.normal) >= 0 ? unsigned_distance : -unsigned_distance;
+  {
+    const Triangle& t = *primitive;
+    const Vector3d a(t[0].x(), t[0].y(), t[0].z()), b(t[1].x(), t[1].y(), t[1].z()), c(t[2].x(), t[2].y(), t[2].z());
+    set_feature(closest_point_on_triangle(p, a, b, c).feature, a, b, c, out.on_face, out.edge);
+  }
   if (unsigned_distance > 1e-12 * (1.0 + p.norm())) {
     const Vector3d direction = offset / unsigned_distance;
     out.normal = out.distance >= 0 ? direction : Vector3d(-direction);
@@ -119,8 +136,10 @@ std::vector<BodyFeaturePoint> BodyDistance::contact_features(const Vector3d& p, 
     const Triangle& t = *id;
     const Vector3d a(t[0].x(), t[0].y(), t[0].z()), b(t[1].x(), t[1].y(), t[1].z()), c(t[2].x(), t[2].y(), t[2].z());
     BodyFeaturePoint term;
-    const Vector3d w = closest_point_on_triangle(p, a, b, c).weights;
+    const TriangleClosestPoint cp = closest_point_on_triangle(p, a, b, c);
+    const Vector3d& w = cp.weights;
     term.closest = w(0) * a + w(1) * b + w(2) * c;
+    set_feature(cp.feature, a, b, c, term.on_face, term.edge);
     if (!((p - term.closest).norm() < radius)) continue;
     concave = concave || face_near_concave_[static_cast<size_t>(f)];
     near_faces.push_back(f);

@@ -16,6 +16,11 @@ struct BodyPoint {
   double distance = 0;  // signed [m]: positive on the side the closest triangle faces
   Vector3d normal;      // unit normal of the closest triangle (direction of increasing distance)
   Vector3d closest;     // closest point on the body [m]
+  // Where the closest point lies: inside a face (no curvature of the distance), on an edge
+  // (direction `edge`: curvature (I - u u^T - e e^T) / d) or at a corner (edge zero:
+  // (I - u u^T) / d).
+  bool on_face = true;
+  Vector3d edge = Vector3d::Zero();
 };
 
 // One term of the body contact near a point (see BodyDistance::contact_features): the closest
@@ -26,6 +31,7 @@ struct BodyFeaturePoint {
   Vector3d closest;
   double weight = 1;
   Vector3d edge = Vector3d::Zero();
+  bool on_face = false;  // the closest point lies inside a face: the distance has no curvature there
 };
 
 class BodyDistance {

@@ -184,9 +184,10 @@ void ClothEnergy::scatter(const std::vector<Block>& blocks, const Eigen::Matrix<
 }
 
 EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, SparseMatrix* hessian, HessianKind membrane_kind,
-                                  HessianKind bending_kind) const {
+                                  HessianKind bending_kind, HessianKind contact_kind) const {
   if (x.rows() != model_.vertex_count) throw ArgumentError("ClothEnergy: drape has the wrong number of vertices");
   const bool want_gradient = gradient != nullptr, want_hessian = hessian != nullptr;
+  const bool exact_contact = contact_kind == HessianKind::Exact;
   if (want_hessian && (hessian->nonZeros() != pattern_.nonZeros() || hessian->rows() != pattern_.rows())) *hessian = pattern_;
   const int n = free_count();
   const long value_count = want_hessian ? hessian->nonZeros() : 0;
@@ -311,15 +312,16 @@ EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, Sparse
       // body is convex or flat (BodyDistance::contact_features). Inside the body, d is signed
       // and the closest point alone pushes the vertex out. Hessian per term k A (u u^T - (t - d)
       // H_d), u = grad d, H_d = 0 from a face's interior, (I - u u^T - e e^T) / d from an edge e,
-      // (I - u u^T) / d from a corner. H_d is PSD, so for the terms counted +1 its part is
-      // negative and is dropped, as before this sum (exact over faces; measured: keeping it, the
-      // 5K and 10K skirts took 521 and 725 Newton iterations instead of 365 and 364); for the
-      // edges counted -1 it is positive and kept, so the Hessian is exact at a crease.
+      // (I - u u^T) / d from a corner (which one: BodyPoint, BodyFeaturePoint). H_d is PSD, so
+      // for the terms counted +1 its part is negative: a vertex on a convex edge or corner of the
+      // body is softer sideways. contact_kind Exact keeps it; otherwise it is dropped there
+      // (Gauss-Newton on d) and kept for the edges counted -1, where it is positive, so the
+      // Hessian is exact at a concave crease. Why both: DrapeSettings::exact_contact_residual.
       const double t = model_.contact_thickness;
       const double k = model_.contact_stiffness * model_.contact_area(v);
       std::vector<BodyFeaturePoint> terms_here;
       if (b.distance > 0.0) terms_here = model_.body->contact_features(p, t);
-      if (terms_here.empty()) terms_here.push_back({b.closest});
+      if (terms_here.empty()) terms_here.push_back({b.closest, 1.0, b.edge, b.on_face});
       const double sign = b.distance < 0.0 ? -1.0 : 1.0;
       for (const BodyFeaturePoint& f : terms_here) {
         const Vector3d offset = p - f.closest;
@@ -332,7 +334,7 @@ EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, Sparse
         if (want_gradient) grad.segment<3>(3 * a) -= f.weight * k * depth * u;
         if (want_hessian) {
           Eigen::Matrix3d H = k * u * u.transpose();
-          if (f.weight < 0.0 && !on_surface)  // an edge: curvature of the distance to it
+          if ((f.weight < 0.0 || exact_contact) && !on_surface && !f.on_face)  // curvature of the distance
             H -= k * depth * sign * (Eigen::Matrix3d::Identity() - u * u.transpose() - f.edge * f.edge.transpose()) / distance;
           H *= f.weight;
           const Block& d = diagonal_blocks_[static_cast<size_t>(a)];

@@ -31,11 +31,13 @@ public:
 
   // Energy [J] of drape x (#V by 3). gradient (size 3 * free_count) is filled when non-null,
   // hessian (fixed pattern, full symmetric storage) when non-null, with the membrane and the
-  // bending Hessians of the given kinds. Element loops run in parallel (one share per thread).
+  // bending Hessians of the given kinds, and body contact's exact (contact_kind Exact) or
+  // without the curvature of the distance where it softens (any other kind; see the contact
+  // term in the source). Element loops run in parallel (one share per thread).
   EnergyTerms evaluate(const MatrixX3d& x, VectorXd* gradient, SparseMatrix* hessian, HessianKind membrane_kind,
-                       HessianKind bending_kind) const;
+                       HessianKind bending_kind, HessianKind contact_kind) const;
   EnergyTerms evaluate(const MatrixX3d& x, VectorXd* gradient, SparseMatrix* hessian, HessianKind kind) const {
-    return evaluate(x, gradient, hessian, kind, kind);
+    return evaluate(x, gradient, hessian, kind, kind, kind);
   }
 
   // A zero matrix with the pattern every Hessian uses.

@@ -157,10 +157,12 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   int fallback_left = 0;
   const bool fallback_allowed = settings.membrane_fallback && membrane_kind == HessianKind::Exact &&
                                 min_stretch(model, x) < settings.membrane_fallback_stretch;
+  // The contact Hessian of the current iteration (DrapeSettings::exact_contact_residual).
+  HessianKind contact_now = HessianKind::GaussNewton;
   // Energy (and derivatives) of E alone; timing kept per phase.
   const auto evaluate = [&](const MatrixX3d& y, VectorXd* grad, SparseMatrix* hess) {
     const auto t0 = Clock::now();
-    const EnergyTerms e = energy.evaluate(y, grad, hess, membrane_now, bending_kind);
+    const EnergyTerms e = energy.evaluate(y, grad, hess, membrane_now, bending_kind, contact_now);
     stats.seconds_assembly += since(t0);
     return e;
   };
@@ -280,6 +282,8 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
     VectorXd g;
     if (fallback_left > 0) --fallback_left;
     else membrane_now = membrane_kind;
+    // The residual of the last iteration's drape picks the contact Hessian of this one.
+    contact_now = iteration > 0 && stats.residual <= settings.exact_contact_residual ? HessianKind::Exact : HessianKind::GaussNewton;
     stats.energy = assemble(x, &g);
     stats.residual = n > 0 ? g.norm() / scale : 0.0;
     if (dynamic) stats.kinetic_energy = 0.5 * velocity.dot(mass.cwiseProduct(velocity));

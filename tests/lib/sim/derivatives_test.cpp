@@ -280,6 +280,41 @@ TEST(Derivatives, BodyContactOnAConcaveCrease) {
               0.5 * model.contact_stiffness * model.contact_area(4) * depth * depth, 1e-12);
 }
 
+// A vertex in the contact layer beside a box's convex edge and beside its corner, where the
+// closest body point lies on the edge or the corner and the distance curves: the exact contact
+// Hessian keeps that curvature (negative sideways) and matches central differences; the
+// Gauss-Newton one, which drops it, does not (the solver uses it away from equilibrium).
+TEST(Derivatives, BodyContactBesideAConvexEdgeAndCorner) {
+  const TriangleMesh box = box_mesh({0, 0, 0}, {0.5, 0.3, 0.5});
+  Scene scene;
+  scene.material = *material_preset("cotton-thin");
+  scene.body = BodySettings{"box", 0.003};
+  for (const double z : {0.25, 0.5011}) {  // beside the edge x = 0.5, y = 0.3; beside the corner
+    const char* what = z < 0.5 ? "contact beside an edge" : "contact beside a corner";
+    Garment g = test::square_panel(2, 0.02);
+    for (int v = 0; v < g.V.rows(); ++v) g.V.row(v) = Vector3d(0.5012 + g.P(v, 0) - 0.01, 0.3009, z + g.P(v, 1) - 0.01);
+    const ClothModel model = cloth_model(g, scene, &box, {0, 1, 2, 3, 5, 6, 7, 8});
+    const ClothEnergy energy(model);
+    ASSERT_EQ(energy.free_count(), 1);
+    const auto contact = [&](const Eigen::Vector3d& q, HessianKind kind) {
+      MatrixX3d x = g.V;
+      x.row(4) = q.transpose();
+      VectorXd grad;
+      SparseMatrix H = energy.pattern();
+      const EnergyTerms e = energy.evaluate(x, &grad, &H, kind);
+      EXPECT_GT(e.contact, 0.0) << what;
+      return std::make_tuple(e.total(), Eigen::Vector3d(grad), Eigen::Matrix3d(Eigen::MatrixXd(H)));
+    };
+    const Eigen::Vector3d q = g.V.row(4).transpose();
+    check_derivatives<3>(q, 1e-7, [&](const Eigen::Vector3d& y) { return contact(y, HessianKind::Exact); }, what);
+    // The dropped curvature, k A (t - d) / d about 0.3 of k A here, is no rounding error.
+    const Eigen::Matrix3d exact = std::get<2>(contact(q, HessianKind::Exact));
+    const Eigen::Matrix3d dropped = std::get<2>(contact(q, HessianKind::GaussNewton));
+    EXPECT_GT(relative_error(dropped, exact), 0.01) << what;
+    EXPECT_LT(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(exact - dropped).eigenvalues().maxCoeff(), 1e-9) << what;
+  }
+}
+
 // Self-contact penalty of a vertex against a triangle, with the vertex in each of the seven
 // regions (face, three edges, three corners) of an ordinary and of a 0.5-degree sliver
 // triangle, at 10-90 % of the contact thickness and away from region borders (where only the
