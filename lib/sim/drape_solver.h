@@ -1,6 +1,7 @@
 // Drapes a cloth model: backward Euler written as minimisation of the incremental potential,
 // solved by Newton with exact element Hessians and Levenberg-Marquardt damping (where the exact
-// Hessian is indefinite, projected membrane elements first: membrane_fallback), CHOLMOD (one
+// Hessian is indefinite, projected membrane elements first: membrane_fallback; body contact's
+// Hessian exact only near equilibrium: exact_contact_residual), CHOLMOD (one
 // symbolic analysis; the system bisected and its halves factorised on two cores,
 // BisectedCholesky) and a backtracking line search that never lets the energy rise.
 //
