@@ -42,11 +42,12 @@ if (traj ne '') {
   set xrange [0:*]
   set offsets 0, 0, graph 0.05, graph 0.05
   set key top right
-  # One line per start and size; the rows of one solve are contiguous, so filtering the others
-  # out (1/0) leaves each line whole.
-  plot for [n in sizes] traj using (strcol(1) eq 'cold' && $2 == n + 0 ? $5 : 1/0):($7 > 1e-4 ? $7 : 1e-4) skip 1 \
+  # One line per start and size, accurate rows only (a run of both presets writes both); the
+  # rows of one solve are contiguous, so filtering the others out (1/0) leaves each line whole.
+  accurate(start, n) = strcol(1) eq start && strcol(3) eq 'accurate' && $2 == n + 0
+  plot for [n in sizes] traj using (accurate('cold', n) ? $5 : 1/0):($7 > 1e-4 ? $7 : 1e-4) skip 1 \
          with lines title sprintf('cold, %s triangles', n), \
-       for [n in sizes] traj using (strcol(1) eq 'warm' && $2 == n + 0 ? $5 : 1/0):($7 > 1e-4 ? $7 : 1e-4) skip 1 \
+       for [n in sizes] traj using (accurate('warm', n) ? $5 : 1/0):($7 > 1e-4 ? $7 : 1e-4) skip 1 \
          with lines dashtype 2 title sprintf('warm, %s triangles', n), \
        2 with lines linecolor 'gray' dashtype 3 title '2 mm'
 }

@@ -101,21 +101,27 @@ BodyPoint BodyDistance::at(const Vector3d& p) const {
   const auto f = static_cast<int>(primitive - tree_->triangles.cbegin());
   BodyPoint out;
   out.closest = {point.x(), point.y(), point.z()};
+  out.face = f;
   out.normal = normals_.row(f);
   const Vector3d offset = p - out.closest;
   // The closest triangle's side decides the sign. Off its interior (closest point on an edge or
   // corner) the offset direction is the better normal for the penalty force.
   const double unsigned_distance = offset.norm();
   out.distance = offset.dot(out.normal) >= 0 ? unsigned_distance : -unsigned_distance;
-  {
-    const Triangle& t = *primitive;
-    const Vector3d a(t[0].x(), t[0].y(), t[0].z()), b(t[1].x(), t[1].y(), t[1].z()), c(t[2].x(), t[2].y(), t[2].z());
-    set_feature(closest_point_on_triangle(p, a, b, c).feature, a, b, c, out.on_face, out.edge);
-  }
   if (unsigned_distance > 1e-12 * (1.0 + p.norm())) {
     const Vector3d direction = offset / unsigned_distance;
     out.normal = out.distance >= 0 ? direction : Vector3d(-direction);
   }
+  return out;
+}
+
+BodyFeaturePoint BodyDistance::closest_on_face(const Vector3d& p, int face) const {
+  const Triangle& t = tree_->triangles[static_cast<size_t>(face)];
+  const Vector3d a(t[0].x(), t[0].y(), t[0].z()), b(t[1].x(), t[1].y(), t[1].z()), c(t[2].x(), t[2].y(), t[2].z());
+  const TriangleClosestPoint cp = closest_point_on_triangle(p, a, b, c);
+  BodyFeaturePoint out;
+  out.closest = cp.weights(0) * a + cp.weights(1) * b + cp.weights(2) * c;
+  set_feature(cp.feature, a, b, c, out.on_face, out.edge);
   return out;
 }
 

@@ -16,17 +16,14 @@ struct BodyPoint {
   double distance = 0;  // signed [m]: positive on the side the closest triangle faces
   Vector3d normal;      // unit normal of the closest triangle (direction of increasing distance)
   Vector3d closest;     // closest point on the body [m]
-  // Where the closest point lies: inside a face (no curvature of the distance), on an edge
-  // (direction `edge`: curvature (I - u u^T - e e^T) / d) or at a corner (edge zero:
-  // (I - u u^T) / d).
-  bool on_face = true;
-  Vector3d edge = Vector3d::Zero();
+  int face = -1;        // the body triangle it lies on
 };
 
 // One term of the body contact near a point (see BodyDistance::contact_features): the closest
 // point of a body face, edge or corner [m] and the term's weight (+1 faces and corners, -1
-// edges). For an edge whose closest point lies inside it, `edge` is its unit direction (the
-// distance's curvature is then (I - u u^T - e e^T) / d); otherwise zero.
+// edges). Where the closest point lies inside an edge (an edge's term, or a face's closest point
+// on one of its edges), `edge` is that edge's unit direction (the distance's curvature is then
+// (I - u u^T - e e^T) / d); otherwise zero.
 struct BodyFeaturePoint {
   Vector3d closest;
   double weight = 1;
@@ -42,6 +39,10 @@ public:
   BodyDistance& operator=(BodyDistance&&) noexcept;
 
   BodyPoint at(const Vector3d& p) const;
+  // Where the closest point to p on body triangle `face` lies: inside the face, on an edge
+  // (BodyFeaturePoint::edge its direction) or at a corner. Only the exact contact Hessian needs
+  // it (the curvature of the distance), so at() leaves it out.
+  BodyFeaturePoint closest_on_face(const Vector3d& p, int face) const;
   // The terms of a C1 contact energy at p: every face, edge and corner of the body closer
   // than radius, faces and corners counted +1 and edges -1. Over a convex or flat part of the
   // body the terms cancel down to the closest feature, so sum_f w_f g(d_f) = g(distance) for

@@ -321,7 +321,15 @@ EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, Sparse
       const double k = model_.contact_stiffness * model_.contact_area(v);
       std::vector<BodyFeaturePoint> terms_here;
       if (b.distance > 0.0) terms_here = model_.body->contact_features(p, t);
-      if (terms_here.empty()) terms_here.push_back({b.closest, 1.0, b.edge, b.on_face});
+      if (terms_here.empty()) {
+        BodyFeaturePoint closest{b.closest};
+        if (want_hessian && exact_contact) {  // where on the face it lies: the distance's curvature
+          const BodyFeaturePoint on = model_.body->closest_on_face(p, b.face);
+          closest.edge = on.edge;
+          closest.on_face = on.on_face;
+        }
+        terms_here.push_back(closest);
+      }
       const double sign = b.distance < 0.0 ? -1.0 : 1.0;
       for (const BodyFeaturePoint& f : terms_here) {
         const Vector3d offset = p - f.closest;
