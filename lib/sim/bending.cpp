@@ -18,8 +18,6 @@ Matrix3d cross_matrix(const Vector3d& v) {
   return m;
 }
 
-// Symmetric "a_i b_j + b_i a_j" placed in the 9x9 of (a, b, c) blocks.
-Mat9 sym_outer(const Vec9& u, const Vec9& v) { return u * v.transpose() + v * u.transpose(); }
 } // namespace
 
 // With a = x1 - x0 (the edge), b = x2 - x0, c = x3 - x0, the face normals are n1 = a x b and
@@ -56,78 +54,106 @@ double dihedral_theta(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2
   return k.degenerate() ? 0.0 : std::atan2(k.y, k.x);
 }
 
+namespace {
+// theta's first derivatives through x and y (see above), in the 9 coordinates (a, b, c).
+struct AngleGradient {
+  Vec9 gx, gy;
+  double tx = 0, ty = 0;    // d theta / dx, d theta / dy
+  double txx = 0, txy = 0;  // second derivatives (d2 theta / dy2 = -txx)
+  Vec9 gradient() const { return tx * gx + ty * gy; }
+};
+AngleGradient angle_gradient(const AngleParts& k) {
+  const Vector3d &a = k.a, &b = k.b, &c = k.c;
+  AngleGradient out;
+  // x = q p - s t and y = -D L with p = a.b, q = a.c, s = a.a, t = b.c, D = det(a, b, c),
+  // L = |a|: dp = (b, a, 0), dq = (c, 0, a), ds = (2a, 0, 0), dt = (0, c, b),
+  // dD = (b x c, c x a, a x b), dL = (a / L, 0, 0).
+  out.gx << k.q * b + k.p * c - 2.0 * k.t * a, k.q * a - k.s * c, k.p * a - k.s * b;
+  out.gy << -(k.L * b.cross(c) + k.D * a / k.L), -k.L * c.cross(a), -k.L * a.cross(b);
+  out.tx = -k.y / k.r2;
+  out.ty = k.x / k.r2;
+  const double r4 = k.r2 * k.r2;
+  out.txx = 2.0 * k.x * k.y / r4;
+  out.txy = (k.y * k.y - k.x * k.x) / r4;
+  return out;
+}
+
+// U Q U^T + w (tx hx + ty hy), U = [gx gy], block by block: the second derivatives of theta
+// (Q = [txx txy; txy -txx], w = 1), or of f(theta) through them (hinge_element).
+// hx and hy, the Hessians of x and y, by 3x3 blocks of (a, b, c):
+//   hx = [bc^T + cb^T - 2t I,  ca^T - 2ac^T + q I,  ba^T - 2ab^T + p I;
+//         .,                   0,                   aa^T - s I;
+//         .,                   .,                   0]
+//   hy = -[gD0 l^T + l gD0^T + D (I - aa^T/s)/L,  -L[c]x + l gD1^T,  L[b]x + l gD2^T;
+//          .,                                     0,                 -L[a]x;
+//          .,                                     .,                 0]
+// with l = a / L and gD = (b x c, c x a, a x b) (the lower blocks are the transposes).
+Mat9 angle_hessian(const AngleParts& k, const AngleGradient& g, const Eigen::Matrix2d& Q, double w) {
+  const Vector3d &a = k.a, &b = k.b, &c = k.c;
+  Eigen::Matrix<double, 9, 2> U;
+  U.col(0) = g.gx;
+  U.col(1) = g.gy;
+  const Eigen::Matrix<double, 9, 2> UQ = U * Q;
+  Mat9 H;
+  for (int i = 0; i < 3; ++i)
+    for (int j = i; j < 3; ++j) H.block<3, 3>(3 * i, 3 * j).noalias() = UQ.block<3, 2>(3 * i, 0) * U.block<3, 2>(3 * j, 0).transpose();
+  if (w != 0.0) {
+    const double wx = w * g.tx, wy = w * g.ty;
+    const Matrix3d I = Matrix3d::Identity();
+    const Vector3d l = a / k.L;
+    const Vector3d d0 = b.cross(c), d1 = c.cross(a), d2 = a.cross(b);
+    H.block<3, 3>(0, 0) += wx * (b * c.transpose() + c * b.transpose() - 2.0 * k.t * I) -
+                           wy * (d0 * l.transpose() + l * d0.transpose() + (k.D / k.L) * (I - l * l.transpose()));
+    H.block<3, 3>(0, 3) += wx * (c * a.transpose() - 2.0 * a * c.transpose() + k.q * I) - wy * (-k.L * cross_matrix(c) + l * d1.transpose());
+    H.block<3, 3>(0, 6) += wx * (b * a.transpose() - 2.0 * a * b.transpose() + k.p * I) - wy * (k.L * cross_matrix(b) + l * d2.transpose());
+    H.block<3, 3>(3, 6) += wx * (a * a.transpose() - k.s * I) + wy * k.L * cross_matrix(a);
+  }
+  // The blocks below the diagonal mirror those above; the diagonal ones are made symmetric to
+  // the last bit.
+  for (int i = 0; i < 3; ++i) {
+    H.block<3, 3>(3 * i, 3 * i) = (0.5 * (H.block<3, 3>(3 * i, 3 * i) + H.block<3, 3>(3 * i, 3 * i).transpose())).eval();
+    for (int j = i + 1; j < 3; ++j) H.block<3, 3>(3 * j, 3 * i) = H.block<3, 3>(3 * i, 3 * j).transpose();
+  }
+  return H;
+}
+
+// Back to the 12 corner coordinates: a, b, c all move with -x0.
+Eigen::Matrix<double, 12, 1> to_corners(const Vec9& g) {
+  Eigen::Matrix<double, 12, 1> out;
+  out.segment<3>(0) = -(g.segment<3>(0) + g.segment<3>(3) + g.segment<3>(6));
+  out.segment<9>(3) = g;
+  return out;
+}
+// H12 = T^T H9 T with T mapping corners to (a, b, c) = (x1, x2, x3) - x0: the blocks of the
+// last three corners are H9's, and x0's row and column are minus the sums of the others.
+Eigen::Matrix<double, 12, 12> to_corners(const Mat9& h) {
+  Eigen::Matrix<double, 12, 12> out;
+  out.block<9, 9>(3, 3) = h;
+  for (int k = 1; k < 4; ++k) {
+    const Matrix3d row_sum = -(h.block<3, 3>(3 * (k - 1), 0) + h.block<3, 3>(3 * (k - 1), 3) + h.block<3, 3>(3 * (k - 1), 6));
+    out.block<3, 3>(3 * k, 0) = row_sum;
+    out.block<3, 3>(0, 3 * k) = row_sum.transpose();
+  }
+  out.block<3, 3>(0, 0) = -(out.block<3, 3>(0, 3) + out.block<3, 3>(0, 6) + out.block<3, 3>(0, 9));
+  return out;
+}
+} // namespace
+
 DihedralAngle dihedral_angle(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const Vector3d& x3,
                              bool want_hessian) {
   const AngleParts parts = angle_parts(x0, x1, x2, x3);
-  const Vector3d &a = parts.a, &b = parts.b, &c = parts.c;
-  const double p = parts.p, q = parts.q, s = parts.s, t = parts.t, L = parts.L, D = parts.D, x = parts.x, y = parts.y,
-               r2 = parts.r2;
   DihedralAngle out;
-  out.gradient.setZero();
-  out.hessian.setZero();
   if (parts.degenerate()) {
+    out.gradient.setZero();
+    out.hessian.setZero();
     out.degenerate = true;
     return out;
   }
-  out.theta = std::atan2(y, x);
-
-  Vec9 gD, gL = Vec9::Zero(), gp, gq, gs = Vec9::Zero(), gt;
-  gD << b.cross(c), c.cross(a), a.cross(b);
-  gL.head<3>() = a / L;
-  gp << b, a, Vector3d::Zero();
-  gq << c, Vector3d::Zero(), a;
-  gs.head<3>() = 2.0 * a;
-  gt << Vector3d::Zero(), c, b;
-  const Vec9 gx = q * gp + p * gq - t * gs - s * gt;
-  const Vec9 gy = -(L * gD + D * gL);
-  const double tx = -y / r2, ty = x / r2;
-  const Vec9 gtheta = tx * gx + ty * gy;
-
-  // Back to the 12 corner coordinates: a, b, c all move with -x0.
-  const auto to_corners = [](const Vec9& g) {
-    Eigen::Matrix<double, 12, 1> out12;
-    out12.segment<3>(0) = -(g.segment<3>(0) + g.segment<3>(3) + g.segment<3>(6));
-    out12.segment<9>(3) = g;
-    return out12;
-  };
-  out.gradient = to_corners(gtheta);
-  if (!want_hessian) return out;
-
-  Mat9 hD = Mat9::Zero();
-  hD.block<3, 3>(0, 3) = -cross_matrix(c);
-  hD.block<3, 3>(0, 6) = cross_matrix(b);
-  hD.block<3, 3>(3, 6) = -cross_matrix(a);
-  hD.block<3, 3>(3, 0) = hD.block<3, 3>(0, 3).transpose();
-  hD.block<3, 3>(6, 0) = hD.block<3, 3>(0, 6).transpose();
-  hD.block<3, 3>(6, 3) = hD.block<3, 3>(3, 6).transpose();
-  Mat9 hL = Mat9::Zero();
-  hL.block<3, 3>(0, 0) = (Matrix3d::Identity() - a * a.transpose() / s) / L;
-  // The second derivatives of p = a.b, q = a.c, s = a.a, t = b.c are identity blocks:
-  // q hp + p hq - t hs - s ht added block by block.
-  Mat9 hx = sym_outer(gp, gq) - sym_outer(gs, gt);
-  const Matrix3d I = Matrix3d::Identity();
-  hx.block<3, 3>(0, 3) += q * I;
-  hx.block<3, 3>(3, 0) += q * I;
-  hx.block<3, 3>(0, 6) += p * I;
-  hx.block<3, 3>(6, 0) += p * I;
-  hx.block<3, 3>(0, 0) -= 2.0 * t * I;
-  hx.block<3, 3>(3, 6) -= s * I;
-  hx.block<3, 3>(6, 3) -= s * I;
-  const Mat9 hy = -(L * hD + sym_outer(gD, gL) + D * hL);
-  const double r4 = r2 * r2;
-  const double txx = 2 * x * y / r4, tyy = -2 * x * y / r4, txy = (y * y - x * x) / r4;
-  const Mat9 htheta = txx * gx * gx.transpose() + tyy * gy * gy.transpose() + txy * sym_outer(gx, gy) + tx * hx + ty * hy;
-
-  // H12 = T^T H9 T with T mapping corners to (a, b, c) = (x1, x2, x3) - x0: the blocks of the
-  // last three corners are H9's, and x0's row and column are minus the sums of the others.
-  for (int k = 0; k < 3; ++k)
-    for (int l = 0; l < 3; ++l) out.hessian.block<3, 3>(3 * (k + 1), 3 * (l + 1)) = htheta.block<3, 3>(3 * k, 3 * l);
-  for (int k = 1; k < 4; ++k) {
-    const Matrix3d row_sum = -(out.hessian.block<3, 3>(3 * k, 3) + out.hessian.block<3, 3>(3 * k, 6) + out.hessian.block<3, 3>(3 * k, 9));
-    out.hessian.block<3, 3>(3 * k, 0) = row_sum;
-    out.hessian.block<3, 3>(0, 3 * k) = row_sum.transpose();
-  }
-  out.hessian.block<3, 3>(0, 0) = -(out.hessian.block<3, 3>(0, 3) + out.hessian.block<3, 3>(0, 6) + out.hessian.block<3, 3>(0, 9));
+  out.theta = std::atan2(parts.y, parts.x);
+  const AngleGradient g = angle_gradient(parts);
+  out.gradient = to_corners(g.gradient());
+  if (want_hessian) out.hessian = to_corners(angle_hessian(parts, g, (Eigen::Matrix2d() << g.txx, g.txy, g.txy, -g.txx).finished(), 1.0));
+  else out.hessian.setZero();
   return out;
 }
 
@@ -145,15 +171,25 @@ double hinge_energy(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, 
 
 Element12 hinge_element(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const Vector3d& x3, double stiffness,
                         double rest_angle, bool want_hessian, HessianKind kind) {
-  const DihedralAngle angle = dihedral_angle(x0, x1, x2, x3, want_hessian && kind != HessianKind::GaussNewton);
+  const AngleParts parts = angle_parts(x0, x1, x2, x3);
   Element12 out;
-  const double d = angle.degenerate ? 0.0 : angle.theta - rest_angle;
+  if (parts.degenerate()) {  // theta undefined: no energy, no force, no stiffness
+    out.gradient.setZero();
+    out.hessian.setZero();
+    return out;
+  }
+  const double d = std::atan2(parts.y, parts.x) - rest_angle;
   out.energy = stiffness * d * d;
-  out.gradient = 2.0 * stiffness * d * angle.gradient;
+  const AngleGradient g = angle_gradient(parts);
+  out.gradient = to_corners(Vec9(2.0 * stiffness * d * g.gradient()));
   if (!want_hessian) return out;
-  out.hessian = 2.0 * stiffness * angle.gradient * angle.gradient.transpose();
-  if (kind == HessianKind::GaussNewton) return out;
-  out.hessian += 2.0 * stiffness * d * angle.hessian;
+  // d2E = 2k (dtheta dtheta^T + d d2theta), and dtheta = U m with m = (tx, ty): the rank-two
+  // part is U Q U^T with Q = 2k (m m^T + d [txx txy; txy -txx]); Gauss-Newton keeps m m^T.
+  const Eigen::Vector2d m(g.tx, g.ty);
+  Eigen::Matrix2d Q = m * m.transpose();
+  const double w = kind == HessianKind::GaussNewton ? 0.0 : d;
+  Q += w * (Eigen::Matrix2d() << g.txx, g.txy, g.txy, -g.txx).finished();
+  out.hessian = to_corners(angle_hessian(parts, g, 2.0 * stiffness * Q, 2.0 * stiffness * w));
   if (kind == HessianKind::Projected) project_to_psd<12>(out.hessian);
   return out;
 }

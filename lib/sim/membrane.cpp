@@ -93,26 +93,39 @@ Element9 membrane_element(const Vector3d& x0, const Vector3d& x1, const Vector3d
   out.gradient.segment<3>(0) = -G.col(0) - G.col(1);
   if (!want_hessian) return out;
 
-  // Column by column: perturb one coordinate of one corner and differentiate G.
+  // Block by block, with F = sum_i x_i b_i^T (b_1, b_2 the rows of Dm^-1, b_0 = -b_1 - b_2):
+  //   d2W/dx_i dx_j = A [ (b_i^T S b_j) I + R_i^T C R_j ],
+  // the geometric term (dropped for Gauss-Newton) and the material term, where R_i is the
+  // 3x3 derivative of the Voigt strain (E11, E22, E12) by x_i, rows b_i0 f1, b_i1 f2,
+  // (b_i0 f2 + b_i1 f1)/2 (f1, f2 the columns of F), and C = [c11 c12 0; c12 c22 0; 0 0 4 c33]
+  // the energy's second derivative in those strains.
   const bool stress_psd = S.trace() >= 0.0 && S.determinant() >= 0.0;
   const bool geometric = kind != HessianKind::GaussNewton;
-  for (int corner = 0; corner < 3; ++corner)
-    for (int axis = 0; axis < 3; ++axis) {
-      Matrix32 dDs = Matrix32::Zero();
-      if (corner == 0) dDs.row(axis).setConstant(-1.0);
-      else dDs(axis, corner - 1) = 1.0;
-      const Matrix32 dF = dDs * rest.Dm_inverse;
-      const Eigen::Matrix2d dE = 0.5 * (dF.transpose() * F + F.transpose() * dF);
-      const Matrix32 dP = (geometric ? Matrix32(dF * S) : Matrix32::Zero()) + F * stress(dE, k);
-      const Matrix32 dG = rest.area * dP * rest.Dm_inverse.transpose();
-      auto column = out.hessian.col(3 * corner + axis);
-      column.segment<3>(3) = dG.col(0);
-      column.segment<3>(6) = dG.col(1);
-      column.segment<3>(0) = -dG.col(0) - dG.col(1);
+  Eigen::Matrix<double, 2, 3> b;
+  b.col(1) = rest.Dm_inverse.row(0).transpose();
+  b.col(2) = rest.Dm_inverse.row(1).transpose();
+  b.col(0) = -b.col(1) - b.col(2);
+  const Vector3d f1 = F.col(0), f2 = F.col(1);
+  Eigen::Matrix3d R[3], CR[3];
+  for (int i = 0; i < 3; ++i) {
+    R[i].row(0) = b(0, i) * f1.transpose();
+    R[i].row(1) = b(1, i) * f2.transpose();
+    R[i].row(2) = 0.5 * (b(0, i) * f2 + b(1, i) * f1).transpose();
+    CR[i].row(0) = rest.area * (k.c11 * R[i].row(0) + k.c12 * R[i].row(1));
+    CR[i].row(1) = rest.area * (k.c12 * R[i].row(0) + k.c22 * R[i].row(1));
+    CR[i].row(2) = rest.area * 4.0 * k.c33 * R[i].row(2);
+  }
+  const Eigen::Matrix3d SB = geometric ? Eigen::Matrix3d(rest.area * b.transpose() * S * b) : Eigen::Matrix3d::Zero();
+  for (int i = 0; i < 3; ++i)
+    for (int j = i; j < 3; ++j) {
+      Eigen::Matrix3d block = R[i].transpose() * CR[j];
+      if (j == i) block = (0.5 * (block + block.transpose())).eval();  // symmetric to the last bit
+      block.diagonal().array() += SB(i, j);
+      out.hessian.block<3, 3>(3 * i, 3 * j) = block;
+      if (j != i) out.hessian.block<3, 3>(3 * j, 3 * i) = block.transpose();
     }
   // With S positive semi-definite the geometric term is PSD too, so only compressed
   // triangles need the (costlier) eigen-decomposition.
-  out.hessian = 0.5 * (out.hessian + out.hessian.transpose()).eval();
   if (kind == HessianKind::Projected && !stress_psd) project_to_psd<9>(out.hessian);
   return out;
 }
