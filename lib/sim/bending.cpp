@@ -17,7 +17,6 @@ Matrix3d cross_matrix(const Vector3d& v) {
   m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
   return m;
 }
-
 } // namespace
 
 // With a = x1 - x0 (the edge), b = x2 - x0, c = x3 - x0, the face normals are n1 = a x b and
