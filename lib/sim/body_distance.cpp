@@ -26,18 +26,6 @@ using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 // plane by more than this fraction of the edge length (flat edges are not concave: there the
 // closest point moves continuously).
 constexpr double kConcaveTolerance = 1e-9;
-
-// The feature of triangle (a, b, c) a closest point lies on (closest_point_on_triangle's
-// numbering): inside the face, or the unit direction of an edge (zero at a corner).
-void set_feature(int feature, const Vector3d& a, const Vector3d& b, const Vector3d& c, bool& on_face, Vector3d& edge) {
-  on_face = feature == 0;
-  edge.setZero();
-  if (feature >= 1 && feature <= 3) {
-    const Vector3d& from = feature == 1 ? a : feature == 2 ? b : c;
-    const Vector3d& to = feature == 1 ? b : feature == 2 ? c : a;
-    edge = (to - from).normalized();
-  }
-}
 } // namespace
 
 struct BodyDistance::Tree {
@@ -121,7 +109,13 @@ BodyFeaturePoint BodyDistance::closest_on_face(const Vector3d& p, int face) cons
   const TriangleClosestPoint cp = closest_point_on_triangle(p, a, b, c);
   BodyFeaturePoint out;
   out.closest = cp.weights(0) * a + cp.weights(1) * b + cp.weights(2) * c;
-  set_feature(cp.feature, a, b, c, out.on_face, out.edge);
+  // closest_point_on_triangle's feature: 0 the face, 1-3 the edges ab, bc, ca, 4-6 the corners.
+  out.on_face = cp.feature == 0;
+  if (cp.feature >= 1 && cp.feature <= 3) {
+    const Vector3d& from = cp.feature == 1 ? a : cp.feature == 2 ? b : c;
+    const Vector3d& to = cp.feature == 1 ? b : cp.feature == 2 ? c : a;
+    out.edge = (to - from).normalized();
+  }
   return out;
 }
 
@@ -139,13 +133,7 @@ std::vector<BodyFeaturePoint> BodyDistance::contact_features(const Vector3d& p, 
   bool concave = false;
   for (const Iterator& id : candidates) {
     const int f = static_cast<int>(id - tree_->triangles.cbegin());
-    const Triangle& t = *id;
-    const Vector3d a(t[0].x(), t[0].y(), t[0].z()), b(t[1].x(), t[1].y(), t[1].z()), c(t[2].x(), t[2].y(), t[2].z());
-    BodyFeaturePoint term;
-    const TriangleClosestPoint cp = closest_point_on_triangle(p, a, b, c);
-    const Vector3d& w = cp.weights;
-    term.closest = w(0) * a + w(1) * b + w(2) * c;
-    set_feature(cp.feature, a, b, c, term.on_face, term.edge);
+    const BodyFeaturePoint term = closest_on_face(p, f);
     if (!((p - term.closest).norm() < radius)) continue;
     concave = concave || face_near_concave_[static_cast<size_t>(f)];
     near_faces.push_back(f);
