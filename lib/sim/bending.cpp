@@ -60,6 +60,8 @@ struct AngleGradient {
   double tx = 0, ty = 0;    // d theta / dx, d theta / dy
   double txx = 0, txy = 0;  // second derivatives (d2 theta / dy2 = -txx)
   Vec9 gradient() const { return tx * gx + ty * gy; }
+  // theta's Hessian in (x, y).
+  Eigen::Matrix2d second() const { return (Eigen::Matrix2d() << txx, txy, txy, -txx).finished(); }
 };
 AngleGradient angle_gradient(const AngleParts& k) {
   const Vector3d &a = k.a, &b = k.b, &c = k.c;
@@ -151,7 +153,7 @@ DihedralAngle dihedral_angle(const Vector3d& x0, const Vector3d& x1, const Vecto
   out.theta = std::atan2(parts.y, parts.x);
   const AngleGradient g = angle_gradient(parts);
   out.gradient = to_corners(g.gradient());
-  if (want_hessian) out.hessian = to_corners(angle_hessian(parts, g, (Eigen::Matrix2d() << g.txx, g.txy, g.txy, -g.txx).finished(), 1.0));
+  if (want_hessian) out.hessian = to_corners(angle_hessian(parts, g, g.second(), 1.0));
   else out.hessian.setZero();
   return out;
 }
@@ -187,7 +189,7 @@ Element12 hinge_element(const Vector3d& x0, const Vector3d& x1, const Vector3d& 
   const Eigen::Vector2d m(g.tx, g.ty);
   Eigen::Matrix2d Q = m * m.transpose();
   const double w = kind == HessianKind::GaussNewton ? 0.0 : d;
-  Q += w * (Eigen::Matrix2d() << g.txx, g.txy, g.txy, -g.txx).finished();
+  Q += w * g.second();
   out.hessian = to_corners(angle_hessian(parts, g, 2.0 * stiffness * Q, 2.0 * stiffness * w));
   if (kind == HessianKind::Projected) project_to_psd<12>(out.hessian);
   return out;
