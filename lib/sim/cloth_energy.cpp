@@ -88,6 +88,14 @@ ClothEnergy::ClothEnergy(const ClothModel& model) : model_(model) {
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
   }
   build_pattern();
+  laplacians_.reserve(model.triangles.size());
+  for (const MembraneRest& r : model.rest) {
+    Eigen::Matrix<double, 3, 2> G;  // rows: grad N_i in the pattern plane [1/m]
+    G.row(1) = r.Dm_inverse.row(0);
+    G.row(2) = r.Dm_inverse.row(1);
+    G.row(0) = -(G.row(1) + G.row(2));
+    laplacians_.push_back(r.area * G * G.transpose());
+  }
   free_mass_.resize(3 * n);
   for (int v = 0; v < n; ++v) free_mass_.segment<3>(3 * v).setConstant(model.mass(free_vertices_[v]));
   const size_t elements = model.triangles.size() + model.hinges.size() + static_cast<size_t>(n);
@@ -392,6 +400,33 @@ void ClothEnergy::add_mass(SparseMatrix& A, double lambda) const {
     const Block& d = diagonal_blocks_[static_cast<size_t>(a)];
     for (int r = 0; r < 3; ++r) values[d.base + r * d.stride + r] += lambda * free_mass_(3 * a + r);
   }
+}
+
+void ClothEnergy::add_laplacian(SparseMatrix& A, double mu) const {
+  double* values = A.valuePtr();
+  for (size_t t = 0; t < laplacians_.size(); ++t) {
+    const auto& blocks = triangle_blocks_[t];
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) {
+        const Block& b = blocks[static_cast<size_t>(j * 3 + i)];
+        if (b.base < 0) continue;
+        for (int r = 0; r < 3; ++r) values[b.base + r * b.stride + r] += mu * laplacians_[t](i, j);
+      }
+  }
+}
+
+VectorXd ClothEnergy::laplacian_times(const VectorXd& d) const {
+  VectorXd y = VectorXd::Zero(d.size());
+  for (size_t t = 0; t < laplacians_.size(); ++t) {
+    const auto& v = model_.triangles[t];
+    for (int i = 0; i < 3; ++i) {
+      const int a = free_index_[v[i]];
+      if (a < 0) continue;
+      for (int j = 0; j < 3; ++j)
+        if (const int b = free_index_[v[j]]; b >= 0) y.segment<3>(3 * a) += laplacians_[t](i, j) * d.segment<3>(3 * b);
+    }
+  }
+  return y;
 }
 
 } // namespace foldsketch

@@ -57,6 +57,11 @@ public:
 
   // Add lambda * M to the diagonal of a matrix with this pattern.
   void add_mass(SparseMatrix& A, double lambda) const;
+  // The rest-shape Laplacian L (the sum over triangles of A grad N_i . grad N_j over the
+  // pattern triangle, dimensionless, positive semi-definite), acting on each coordinate:
+  // add mu * L to a matrix with this pattern, or give L d for free-DOF displacements d.
+  void add_laplacian(SparseMatrix& A, double mu) const;
+  VectorXd laplacian_times(const VectorXd& d) const;
 
 private:
   struct Block {   // where an element's (a, b) 3x3 block lives in the value array
@@ -75,6 +80,7 @@ private:
   std::vector<std::vector<int>> neighbours_;  // per free vertex (block column): sorted block rows
   std::vector<std::vector<Block>> triangle_blocks_, hinge_blocks_, stitch_blocks_;
   std::vector<Block> diagonal_blocks_;  // per free vertex
+  std::vector<Eigen::Matrix3d> laplacians_;  // per triangle: A grad N_i . grad N_j at rest
   VectorXd free_mass_;
   // Body contact "only where it acts": per free vertex, the last point where its body distance
   // was queried and that distance (NaN: none yet). Distance to a surface is 1-Lipschitz, so a

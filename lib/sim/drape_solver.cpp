@@ -137,10 +137,25 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   // The incremental potential Phi(y) = E(y) + |y - x_hat|^2_M / (2 h^2), x_hat = x_n + h v_n
   // (v_n = 0 in static mode), with damping = 1/h^2.
   MatrixX3d x_step = x;
+  // Static mode with the Laplacian metric (DrapeSettings::proximal_metric) measures the step
+  // by damping * (m_mean L + laplacian_mass_share M) instead of damping * M.
+  const bool laplacian_metric = !dynamic && settings.proximal_metric == ProximalMetric::Laplacian;
+  const double metric_mass = laplacian_metric ? settings.laplacian_mass_share : 1.0;
+  const double metric_laplacian = laplacian_metric && n > 0 ? mass.sum() / (3.0 * n) : 0.0;
   // Dynamic mode adds the drag potential drag/(2h) |y - x_n|^2_M (force -drag M v_{n+1}).
   const auto inertia = [&](const MatrixX3d& y, VectorXd* grad) {
     double value = 0.0;
     const double drag = dynamic ? settings.drag / h : 0.0;
+    if (laplacian_metric) {
+      VectorXd d(3 * n);
+      for (int a = 0; a < n; ++a) {
+        const int v = energy.free_vertices()[a];
+        d.segment<3>(3 * a) = (y.row(v) - x_step.row(v)).transpose();
+      }
+      const VectorXd force = damping * (metric_laplacian * energy.laplacian_times(d) + metric_mass * mass.cwiseProduct(d));
+      if (grad) *grad += force;
+      return 0.5 * d.dot(force);
+    }
     for (int a = 0; a < n; ++a) {
       const int v = energy.free_vertices()[a];
       const Eigen::Vector3d moved_by = (y.row(v) - x_step.row(v)).transpose();
@@ -194,7 +209,8 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
     for (int attempt = 0; attempt < 60; ++attempt) {
       if (!factor_current) {
         const double mass_term = damping + (dynamic ? settings.drag / h : 0.0);
-        energy.add_mass(A, mass_term - applied_damping);
+        energy.add_mass(A, metric_mass * (mass_term - applied_damping));
+        if (laplacian_metric) energy.add_laplacian(A, metric_laplacian * (mass_term - applied_damping));
         applied_damping = mass_term;
         factor_current = cholesky.factorize(A);
         if (!factor_current && fallback_allowed && membrane_now == HessianKind::Exact) {

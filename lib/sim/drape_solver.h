@@ -5,9 +5,11 @@
 // symbolic analysis; the system bisected and its halves factorised on two cores,
 // BisectedCholesky) and a backtracking line search that never lets the energy rise.
 //
-// Static mode drives the drape to equilibrium with quasi-static implicit steps: each step
-// minimises E(x) + |x - x_n|^2_M / (2 h^2) from rest, and h grows while steps succeed, so the
-// iteration turns into Newton's method on E (Levenberg-Marquardt damping by the mass matrix).
+// Static mode drives the drape to equilibrium with damped steps: each step minimises
+// E(x) + damping |x - x_n|^2_D / 2, D the step metric (proximal_metric: the pattern's Laplacian
+// plus a little mass by default, the mass matrix alone for a quasi-static backward-Euler step
+// with damping = 1/h^2), and the damping falls while steps succeed, so the iteration turns into
+// Newton's method on E (Levenberg-Marquardt damping by D).
 // It stops when the relative force residual |grad E|_2 / |m g|_2 over the free degrees of
 // freedom falls to the tolerance. Dynamic mode integrates with momentum and stops when the
 // drape is at rest (residual and kinetic energy below tolerance).
@@ -30,6 +32,12 @@
 
 namespace foldsketch {
 
+// The metric of static mode's quasi-static steps (DrapeSettings::proximal_metric).
+enum class ProximalMetric {
+  Mass,      // |y - x_n|^2_M: a backward-Euler step from rest
+  Laplacian  // |y - x_n|^2 in m_mean L + laplacian_mass_share M (L: the pattern's Laplacian)
+};
+
 struct DrapeSettings {
   SimulationMode mode = SimulationMode::Static;
   SolverPreset preset = SolverPreset::Accurate;
@@ -50,6 +58,27 @@ struct DrapeSettings {
   // (10, 2): 627. The spread is the path-dependence of fold formation, not a trend.
   double damping_decrease = 4.0;
   double damping_increase = 2.0;
+  // Static mode: what the damping measures a step by. Mass damps every motion alike, and must
+  // exceed the most negative curvature of the exact Hessian: where the cloth is compressed
+  // (stress -s), the membrane's geometric stiffness is about -s k^2 A for a wrinkle of
+  // wavenumber k, largest at the mesh scale, so a mass damping that makes the Hessian positive
+  // definite there slows the fold-scale motion as much (the 20K skirt's 2 % re-drape kept it
+  // at 1e6-2.5e7 s^-2 for its first 27 Newton iterations). The Laplacian damps a mode by k^2,
+  // as that negative curvature grows, so one damping covers every wavelength and leaves the
+  // long-wavelength motion (folds sliding, the garment settling) nearly free: the same
+  // re-drape's relative residual fell from 109 to 1 in 9 iterations instead of 27. A little
+  // mass (laplacian_mass_share) keeps the metric positive definite for a garment with
+  // neither pins nor contact. Dynamic mode always uses the mass: it is the physics.
+  // Measured (bench/drape_bench.txt, the size sweep, 9 skirts of 4.8K-23K triangles): Newton
+  // iterations summed, warm (2 % re-drape) 1150 with the mass, 992 / 955 / 680 (7 sizes) with
+  // mass shares 0.1 / 1 / 0.01; cold 4653 against 3930 / 5432 / 3759 (7 sizes, against 3334):
+  // warm re-drapes are shorter at every share, cold drapes move within their path noise, best
+  // at 0.1. Pinned sheets squeezed to 0.95 / 0.9 / 0.6 of their width, exact Hessian without
+  // the membrane fallback: the mass metric did not converge in 1000 iterations, the Laplacian
+  // took 18 / 33 / 132 (share 0.01), 29 / 52 / 333 (0.1), 169 / - / - (1). Share 0.1: our
+  // choice from these.
+  ProximalMetric proximal_metric = ProximalMetric::Laplacian;
+  double laplacian_mass_share = 0.1;
   // Fast preset: residual at which it stops, as a multiple of `tolerance` (measured: see bench/).
   double fast_tolerance_factor = 100.0;
   // Element Hessians. Exact: near a stable equilibrium the assembled
@@ -74,9 +103,10 @@ struct DrapeSettings {
   // noise, but the 54K skirt took 22 minutes instead of 6 (bench/drape_bench.txt). Projecting
   // every membrane element all the time took 1803 iterations on the 10K skirt (365 exact).
   // Iterations, 5: 264 on the BGL skirt with 304 factorisations; re-trying the exact Hessian
-  // at every iteration, 264 with 506. Not solved by this rule: a start squeezed by less,
-  // with the squeezed edge pinned (a sheet at 0.95 of its width), still crawls with the exact
-  // Hessian (residual 2e-3 after 400 iterations), where the fallback would converge in 76. And
+  // at every iteration, 264 with 506. Not solved by this rule, with the mass metric: a start
+  // squeezed by less, with the squeezed edge pinned (a sheet at 0.95 of its width), crawls with
+  // the exact Hessian (residual 2e-5 after 1000 iterations); the Laplacian metric converges in
+  // 29 (proximal_metric). And
   // the projection removes exactly the curvature that points out of a flat, squeezed sheet: a
   // perfectly flat sheet at 0.98, forced to fall back, converges in 4 iterations to the flat
   // compressed state, an unstable equilibrium. A wider rule needs a check of the exact
