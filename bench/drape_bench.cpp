@@ -77,6 +77,7 @@ int main(int argc, char** argv) {
   std::string trajectory_path;
   bool trace = false, no_reference = false;
   double time_step = DrapeSettings{}.time_step;
+  std::string metric = "laplacian";
   app.add_option("--sizes", sizes, "target triangle counts")->delimiter(',');
   app.add_option("--runs", runs, "runs per preset (the median is reported)")->check(CLI::PositiveNumber);
   app.add_option("--body", body_path, "body mesh");
@@ -91,6 +92,10 @@ int main(int argc, char** argv) {
   app.add_option("--ease", ease, "warm start: relative widening of every pattern (pattern x)")->check(CLI::PositiveNumber);
   app.add_option("--time-step", time_step, "first quasi-static step [s]: the solver's damping starts at 1/h^2")
       ->check(CLI::PositiveNumber);
+  app.add_option("--metric", metric,
+                 "what the damping of the static steps measures a step by (DrapeSettings::proximal_metric): laplacian "
+                 "(the default), or mass (the quasi-static backward-Euler step), for the timed and the reference drapes")
+      ->check(CLI::IsMember({"laplacian", "mass"}));
   app.add_flag("--no-reference", no_reference,
                "skip the reference drapes (no error columns; a warm start then starts from the cold accurate drape): "
                "for sweeps over many sizes");
@@ -101,6 +106,7 @@ int main(int argc, char** argv) {
   app.add_flag("--trace", trace,
                "print every Newton iteration of the timed solves on stderr (factorisations so far, residual, step, damping)");
   CLI11_PARSE(app, argc, argv);
+  const ProximalMetric proximal_metric = metric == "mass" ? ProximalMetric::Mass : ProximalMetric::Laplacian;
   const DrapeProgress tracer = [](const DrapeStats& s, const MatrixX3d&) {
     std::fprintf(stderr, "%5d factorisations %5d residual %.3e step %.3f length %.2e damping %.1e\n", s.newton_iterations,
                  s.factorizations, s.residual, s.step_fraction, s.step_length, s.damping);
@@ -133,6 +139,7 @@ int main(int argc, char** argv) {
       settings.preset = preset;
       settings.max_steps = 20000;
       settings.time_step = time_step;
+      settings.proximal_metric = proximal_metric;
       std::vector<double> seconds;
       DrapeResult result;
       // The error along the last run, against the reference: one pass over the vertices per
@@ -205,6 +212,7 @@ int main(int argc, char** argv) {
   DrapeSettings reference_settings;
   reference_settings.tolerance = 1e-9;
   reference_settings.max_steps = 20000;
+  reference_settings.proximal_metric = proximal_metric;
   for (int size : sizes) {
     SampleParams params;
     params.triangles = size;
@@ -222,7 +230,11 @@ int main(int argc, char** argv) {
       if (!reference) previous = drape;
     }
     if (warm) {
-      if (previous.rows() == 0) previous = solve_drape(model, sample.garment.V, DrapeSettings{}).V;
+      if (previous.rows() == 0) {
+        DrapeSettings settings;
+        settings.proximal_metric = proximal_metric;
+        previous = solve_drape(model, sample.garment.V, settings).V;
+      }
       Garment wider = sample.garment;
       wider.P.col(0) *= 1.0 + ease;
       const ClothModel wider_model = cloth_model(wider, sample.scene, &body, pinned);
