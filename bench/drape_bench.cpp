@@ -106,7 +106,8 @@ int main(int argc, char** argv) {
   app.add_flag("--trace", trace,
                "print every Newton iteration of the timed solves on stderr (factorisations so far, residual, step, damping)");
   CLI11_PARSE(app, argc, argv);
-  const ProximalMetric proximal_metric = metric == "mass" ? ProximalMetric::Mass : ProximalMetric::Laplacian;
+  DrapeSettings defaults;  // what every drape here starts from
+  defaults.proximal_metric = metric == "mass" ? ProximalMetric::Mass : ProximalMetric::Laplacian;
   const DrapeProgress tracer = [](const DrapeStats& s, const MatrixX3d&) {
     std::fprintf(stderr, "%5d factorisations %5d residual %.3e step %.3f length %.2e damping %.1e\n", s.newton_iterations,
                  s.factorizations, s.residual, s.step_fraction, s.step_length, s.damping);
@@ -135,11 +136,10 @@ int main(int argc, char** argv) {
     bool have_accurate = false;
     for (const SolverPreset preset : {SolverPreset::Accurate, SolverPreset::Fast}) {
       if (std::find(presets.begin(), presets.end(), to_string(preset)) == presets.end()) continue;
-      DrapeSettings settings;
+      DrapeSettings settings = defaults;
       settings.preset = preset;
       settings.max_steps = 20000;
       settings.time_step = time_step;
-      settings.proximal_metric = proximal_metric;
       std::vector<double> seconds;
       DrapeResult result;
       // The error along the last run, against the reference: one pass over the vertices per
@@ -209,10 +209,9 @@ int main(int argc, char** argv) {
                   reference->stats.residual, reference->stats.converged ? "" : " (not converged)");
     return drape;
   };
-  DrapeSettings reference_settings;
+  DrapeSettings reference_settings = defaults;
   reference_settings.tolerance = 1e-9;
   reference_settings.max_steps = 20000;
-  reference_settings.proximal_metric = proximal_metric;
   for (int size : sizes) {
     SampleParams params;
     params.triangles = size;
@@ -230,11 +229,7 @@ int main(int argc, char** argv) {
       if (!reference) previous = drape;
     }
     if (warm) {
-      if (previous.rows() == 0) {
-        DrapeSettings settings;
-        settings.proximal_metric = proximal_metric;
-        previous = solve_drape(model, sample.garment.V, settings).V;
-      }
+      if (previous.rows() == 0) previous = solve_drape(model, sample.garment.V, defaults).V;
       Garment wider = sample.garment;
       wider.P.col(0) *= 1.0 + ease;
       const ClothModel wider_model = cloth_model(wider, sample.scene, &body, pinned);

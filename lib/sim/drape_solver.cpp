@@ -134,11 +134,10 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   double damping = 1.0 / (h * h);
   bool factor_current = false;
 
-  // The incremental potential Phi(y) = E(y) + |y - x_hat|^2_M / (2 h^2), x_hat = x_n + h v_n
-  // (v_n = 0 in static mode), with damping = 1/h^2.
+  // The incremental potential Phi(y) = E(y) + damping |y - x_hat|^2_D / 2, x_hat = x_n + h v_n
+  // (v_n = 0 in static mode), damping = 1/h^2, D the mass matrix M, or in static mode with the
+  // Laplacian metric (DrapeSettings::proximal_metric) m_mean L + laplacian_mass_share M.
   MatrixX3d x_step = x;
-  // Static mode with the Laplacian metric (DrapeSettings::proximal_metric) measures the step
-  // by damping * (m_mean L + laplacian_mass_share M) instead of damping * M.
   const bool laplacian_metric = !dynamic && settings.proximal_metric == ProximalMetric::Laplacian;
   const double metric_mass = laplacian_metric ? settings.laplacian_mass_share : 1.0;
   const double metric_laplacian = laplacian_metric && n > 0 ? mass.sum() / (3.0 * n) : 0.0;
