@@ -90,11 +90,8 @@ ClothEnergy::ClothEnergy(const ClothModel& model) : model_(model) {
   build_pattern();
   laplacians_.reserve(model.triangles.size());
   for (const MembraneRest& r : model.rest) {
-    Eigen::Matrix<double, 3, 2> G;  // rows: grad N_i in the pattern plane [1/m]
-    G.row(1) = r.Dm_inverse.row(0);
-    G.row(2) = r.Dm_inverse.row(1);
-    G.row(0) = -(G.row(1) + G.row(2));
-    laplacians_.push_back(r.area * G * G.transpose());
+    const Eigen::Matrix<double, 2, 3> b = shape_gradients(r);
+    laplacians_.push_back(r.area * b.transpose() * b);
   }
   free_mass_.resize(3 * n);
   for (int v = 0; v < n; ++v) free_mass_.segment<3>(3 * v).setConstant(model.mass(free_vertices_[v]));

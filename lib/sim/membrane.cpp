@@ -26,6 +26,14 @@ MembraneRest membrane_rest(const Vector2d& X0, const Vector2d& X1, const Vector2
   return r;
 }
 
+Eigen::Matrix<double, 2, 3> shape_gradients(const MembraneRest& rest) {
+  Eigen::Matrix<double, 2, 3> b;
+  b.col(1) = rest.Dm_inverse.row(0).transpose();
+  b.col(2) = rest.Dm_inverse.row(1).transpose();
+  b.col(0) = -b.col(1) - b.col(2);
+  return b;
+}
+
 namespace {
 using Matrix32 = Eigen::Matrix<double, 3, 2>;
 
@@ -101,10 +109,7 @@ Element9 membrane_element(const Vector3d& x0, const Vector3d& x1, const Vector3d
   // the energy's second derivative in those strains.
   const bool stress_psd = S.trace() >= 0.0 && S.determinant() >= 0.0;
   const bool geometric = kind != HessianKind::GaussNewton;
-  Eigen::Matrix<double, 2, 3> b;
-  b.col(1) = rest.Dm_inverse.row(0).transpose();
-  b.col(2) = rest.Dm_inverse.row(1).transpose();
-  b.col(0) = -b.col(1) - b.col(2);
+  const Eigen::Matrix<double, 2, 3> b = shape_gradients(rest);
   const Vector3d f1 = F.col(0), f2 = F.col(1);
   Eigen::Matrix3d R[3], CR[3];
   for (int i = 0; i < 3; ++i) {

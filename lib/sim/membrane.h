@@ -31,6 +31,10 @@ struct MembraneRest {
   double area = 0;
 };
 MembraneRest membrane_rest(const Vector2d& X0, const Vector2d& X1, const Vector2d& X2);
+// Gradients of the triangle's linear shape functions over the pattern [1/m]: column i is
+// grad N_i (columns 1, 2 the rows of Dm^-1, column 0 minus their sum), so that the
+// deformation gradient is F = sum_i x_i grad N_i^T.
+Eigen::Matrix<double, 2, 3> shape_gradients(const MembraneRest& rest);
 
 enum class HessianKind {
   Exact,       // the true Hessian (may be indefinite under compression); for tests
