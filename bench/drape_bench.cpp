@@ -17,6 +17,7 @@
 #include <fstream>
 #include <limits>
 #include <optional>
+#include <random>
 #include <string>
 #include <sstream>
 #include <vector>
@@ -57,6 +58,22 @@ double growth_exponent(const std::vector<double>& x, const std::vector<double>& 
   return sxy / sxx;
 }
 
+// The start with every free vertex moved by an independent uniform random amount in
+// [-amplitude, amplitude] per coordinate [m]; `seed` makes it reproducible (mt19937's raw
+// output is fixed by the standard, unlike its distributions).
+MatrixX3d perturbed(const MatrixX3d& start, const std::vector<int>& pinned, double amplitude, unsigned seed) {
+  std::mt19937 random(seed);
+  std::vector<char> is_pinned(static_cast<size_t>(start.rows()), 0);
+  for (const int v : pinned) is_pinned[static_cast<size_t>(v)] = 1;
+  MatrixX3d x = start;
+  for (Eigen::Index v = 0; v < x.rows(); ++v)
+    for (int c = 0; c < 3; ++c) {
+      const double u = static_cast<double>(random()) / 4294967295.0;  // [0, 1]
+      if (!is_pinned[static_cast<size_t>(v)]) x(v, c) += amplitude * (2 * u - 1);
+    }
+  return x;
+}
+
 struct Row {  // one timed preset at one size
   std::string start, preset;
   double triangles = 0, seconds = 0, iterations = 0;
@@ -78,6 +95,7 @@ int main(int argc, char** argv) {
   bool trace = false, no_reference = false;
   double time_step = DrapeSettings{}.time_step;
   std::string metric = "laplacian";
+  std::vector<double> perturbations;
   app.add_option("--sizes", sizes, "target triangle counts")->delimiter(',');
   app.add_option("--runs", runs, "runs per preset (the median is reported)")->check(CLI::PositiveNumber);
   app.add_option("--body", body_path, "body mesh");
@@ -96,13 +114,21 @@ int main(int argc, char** argv) {
                  "what the damping of the static steps measures a step by (DrapeSettings::proximal_metric): laplacian "
                  "(the default), or mass (the quasi-static backward-Euler step), for the timed and the reference drapes")
       ->check(CLI::IsMember({"laplacian", "mass"}));
-  app.add_flag("--no-reference", no_reference,
+  CLI::Option* no_reference_flag = app.add_flag("--no-reference", no_reference,
                "skip the reference drapes (no error columns; a warm start then starts from the cold accurate drape): "
                "for sweeps over many sizes");
   app.add_option("--trajectory", trajectory_path,
                  "CSV of the error along each timed solve: after every Newton iteration, the wall time and the mean and "
                  "max distance to the reference drape (what stopping there would cost); the table then also prints the "
                  "start's error and the time at which the error first fell to 2, 1 and 0.1 mm mean");
+  app.add_option("--perturb", perturbations,
+                 "also drape (accurate preset) from each start with every free vertex moved by a random amount up to "
+                 "this much per coordinate [m], once per run (seeded by the run number), and report how far each ends "
+                 "from the unperturbed reference and its energy against the reference's: how well the start determines "
+                 "the drape, so the error columns' floor")
+      ->delimiter(',')
+      ->check(CLI::PositiveNumber)
+      ->excludes(no_reference_flag);
   app.add_flag("--trace", trace,
                "print every Newton iteration of the timed solves on stderr (factorisations so far, residual, step, damping)");
   CLI11_PARSE(app, argc, argv);
@@ -209,6 +235,33 @@ int main(int argc, char** argv) {
                   reference->stats.residual, reference->stats.converged ? "" : " (not converged)");
     return drape;
   };
+  // The accurate drape from `start` perturbed by each amplitude, `runs` seeds each, against
+  // `reference`: where it ends, and at what cost.
+  const auto perturb_start = [&](const ClothModel& model, const MatrixX3d& start, const std::vector<int>& pinned,
+                                 const DrapeResult& reference) {
+    if (perturbations.empty()) return;
+    std::printf("%9s from the start perturbed (accurate; per seed: Newton iterations, seconds, distance to the reference "
+                "mean / max [mm], energy minus the reference's [J])\n", "");
+    DrapeSettings settings = defaults;
+    settings.max_steps = 20000;
+    settings.time_step = time_step;
+    for (const double amplitude : perturbations) {
+      std::vector<double> iterations, seconds, means;
+      std::printf("%9s +-%.0e m:", "", amplitude);
+      for (int r = 0; r < runs; ++r) {
+        const DrapeResult result = solve_drape(model, perturbed(start, pinned, amplitude, static_cast<unsigned>(r + 1)), settings);
+        const ErrorMm e = error_mm(result.V, reference.V);
+        std::printf("%s %d it. %.2f s %.3f / %.2f mm %+.1e J%s", r ? ";" : "", result.stats.newton_iterations,
+                    result.stats.seconds_total, e.mean, e.max, result.stats.energy.total() - reference.stats.energy.total(),
+                    result.stats.converged ? "" : " (not converged)");
+        iterations.push_back(result.stats.newton_iterations);
+        seconds.push_back(result.stats.seconds_total);
+        means.push_back(e.mean);
+      }
+      std::printf("\n%9s   medians: %.0f it., %.2f s, %.3f mm mean\n", "", median(iterations), median(seconds), median(means));
+      std::fflush(stdout);
+    }
+  };
   DrapeSettings reference_settings = defaults;
   reference_settings.tolerance = 1e-9;
   reference_settings.max_steps = 20000;
@@ -227,6 +280,7 @@ int main(int argc, char** argv) {
       table_header("cold start: from the sewn placement");
       const MatrixX3d drape = time_presets("cold", model, sample.garment.V, reference ? &*reference : nullptr, csv);
       if (!reference) previous = drape;
+      if (reference) perturb_start(model, sample.garment.V, pinned, *reference);
     }
     if (warm) {
       if (previous.rows() == 0) previous = solve_drape(model, sample.garment.V, defaults).V;
@@ -240,6 +294,7 @@ int main(int argc, char** argv) {
                     reference ? "reference" : "accurate drape");
       table_header(title);
       time_presets("warm", wider_model, previous, wider_reference ? &*wider_reference : nullptr, warm_csv);
+      if (wider_reference) perturb_start(wider_model, previous, pinned, *wider_reference);
     }
   }
 
