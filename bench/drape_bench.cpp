@@ -58,19 +58,15 @@ double growth_exponent(const std::vector<double>& x, const std::vector<double>& 
   return sxy / sxx;
 }
 
-// The start with every free vertex moved by an independent uniform random amount in
-// [-amplitude, amplitude] per coordinate [m]; `seed` makes it reproducible (mt19937's raw
-// output is fixed by the standard, unlike its distributions).
-MatrixX3d perturbed(const MatrixX3d& start, const std::vector<int>& pinned, double amplitude, unsigned seed) {
+// The start with every vertex moved by an independent uniform random amount in
+// [-amplitude, amplitude] per coordinate [m] (the solver puts pinned vertices back on their
+// pins); `seed` makes it reproducible (mt19937's raw output is fixed by the standard, unlike
+// its distributions).
+MatrixX3d perturbed(const MatrixX3d& start, double amplitude, unsigned seed) {
   std::mt19937 random(seed);
-  std::vector<char> is_pinned(static_cast<size_t>(start.rows()), 0);
-  for (const int v : pinned) is_pinned[static_cast<size_t>(v)] = 1;
   MatrixX3d x = start;
   for (Eigen::Index v = 0; v < x.rows(); ++v)
-    for (int c = 0; c < 3; ++c) {
-      const double u = static_cast<double>(random()) / 4294967295.0;  // [0, 1]
-      if (!is_pinned[static_cast<size_t>(v)]) x(v, c) += amplitude * (2 * u - 1);
-    }
+    for (int c = 0; c < 3; ++c) x(v, c) += amplitude * (2 * static_cast<double>(random()) / 4294967295.0 - 1);
   return x;
 }
 
@@ -150,6 +146,14 @@ int main(int argc, char** argv) {
   if (!trajectory_path.empty())
     (trajectory.open(trajectory_path), trajectory << "start,triangles,preset,newton_iterations,seconds,residual,mean_error_mm,max_error_mm\n");
   std::vector<Row> rows;
+  // What every timed drape (and the perturbed ones) solves with.
+  const auto timed_settings = [&](SolverPreset preset) {
+    DrapeSettings settings = defaults;
+    settings.preset = preset;
+    settings.max_steps = 20000;
+    settings.time_step = time_step;
+    return settings;
+  };
   const auto table_header = [](const char* title) {
     std::printf("%s\n%9s %-9s %10s %7s %8s %8s %9s %10s %10s\n", title, "triangles", "preset", "median [s]", "Newton", "factor.",
                 "factor.%", "residual", "mean [mm]", "max [mm]");
@@ -162,10 +166,7 @@ int main(int argc, char** argv) {
     bool have_accurate = false;
     for (const SolverPreset preset : {SolverPreset::Accurate, SolverPreset::Fast}) {
       if (std::find(presets.begin(), presets.end(), to_string(preset)) == presets.end()) continue;
-      DrapeSettings settings = defaults;
-      settings.preset = preset;
-      settings.max_steps = 20000;
-      settings.time_step = time_step;
+      const DrapeSettings settings = timed_settings(preset);
       std::vector<double> seconds;
       DrapeResult result;
       // The error along the last run, against the reference: one pass over the vertices per
@@ -237,19 +238,16 @@ int main(int argc, char** argv) {
   };
   // The accurate drape from `start` perturbed by each amplitude, `runs` seeds each, against
   // `reference`: where it ends, and at what cost.
-  const auto perturb_start = [&](const ClothModel& model, const MatrixX3d& start, const std::vector<int>& pinned,
-                                 const DrapeResult& reference) {
+  const auto perturb_start = [&](const ClothModel& model, const MatrixX3d& start, const DrapeResult& reference) {
     if (perturbations.empty()) return;
     std::printf("%9s from the start perturbed (accurate; per seed: Newton iterations, seconds, distance to the reference "
                 "mean / max [mm], energy minus the reference's [J])\n", "");
-    DrapeSettings settings = defaults;
-    settings.max_steps = 20000;
-    settings.time_step = time_step;
+    const DrapeSettings settings = timed_settings(SolverPreset::Accurate);
     for (const double amplitude : perturbations) {
       std::vector<double> iterations, seconds, means;
       std::printf("%9s +-%.0e m:", "", amplitude);
       for (int r = 0; r < runs; ++r) {
-        const DrapeResult result = solve_drape(model, perturbed(start, pinned, amplitude, static_cast<unsigned>(r + 1)), settings);
+        const DrapeResult result = solve_drape(model, perturbed(start, amplitude, static_cast<unsigned>(r + 1)), settings);
         const ErrorMm e = error_mm(result.V, reference.V);
         std::printf("%s %d it. %.2f s %.3f / %.2f mm %+.1e J%s", r ? ";" : "", result.stats.newton_iterations,
                     result.stats.seconds_total, e.mean, e.max, result.stats.energy.total() - reference.stats.energy.total(),
@@ -280,7 +278,7 @@ int main(int argc, char** argv) {
       table_header("cold start: from the sewn placement");
       const MatrixX3d drape = time_presets("cold", model, sample.garment.V, reference ? &*reference : nullptr, csv);
       if (!reference) previous = drape;
-      if (reference) perturb_start(model, sample.garment.V, pinned, *reference);
+      if (reference) perturb_start(model, sample.garment.V, *reference);
     }
     if (warm) {
       if (previous.rows() == 0) previous = solve_drape(model, sample.garment.V, defaults).V;
@@ -294,7 +292,7 @@ int main(int argc, char** argv) {
                     reference ? "reference" : "accurate drape");
       table_header(title);
       time_presets("warm", wider_model, previous, wider_reference ? &*wider_reference : nullptr, warm_csv);
-      if (wider_reference) perturb_start(wider_model, previous, pinned, *wider_reference);
+      if (wider_reference) perturb_start(wider_model, previous, *wider_reference);
     }
   }
 
