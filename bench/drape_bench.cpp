@@ -4,7 +4,9 @@
 //
 // Two starts: "cold", from the sample's sewn placement (the folds form from nothing), and
 // "warm", the pipeline's case: the patterns change a little (here they widen by --ease, as when
-// update-patterns adds ease) and the garment re-drapes from the previous equilibrium.
+// update-patterns adds ease) and the garment re-drapes from an earlier equilibrium: each of the
+// cold equilibria stored in bench/starts (stored_start.h), so that the start does not move with
+// the solver under test, and the median over them.
 //
 // The iteration count of a drape depends on the path its folds take, and that changes with the
 // mesh: cold 20K-triangle skirts near one size took 389 to 914 Newton iterations. So the table
@@ -27,6 +29,7 @@
 #include "formats/body_mesh.h"
 #include "samples/sample_scenes.h"
 #include "sim/drape_solver.h"
+#include "stored_start.h"
 
 using namespace foldsketch;
 
@@ -70,10 +73,67 @@ MatrixX3d perturbed(const MatrixX3d& start, double amplitude, unsigned seed) {
   return x;
 }
 
-struct Row {  // one timed preset at one size
+struct Row {  // one timed preset at one size, for the cost growth
   std::string start, preset;
   double triangles = 0, seconds = 0, iterations = 0;
 };
+
+// What the table prints of one preset's drape (or of the median over several starts).
+struct Summary {
+  double seconds = 0, iterations = 0, factorizations = 0, share = 0, residual = 0;
+  bool has_error = false;  // against a reference
+  ErrorMm error;
+  bool converged = true;
+};
+
+Summary summary(const DrapeStats& s, double seconds, const std::optional<ErrorMm>& error) {
+  return {seconds, static_cast<double>(s.newton_iterations), static_cast<double>(s.factorizations),
+          s.seconds_factorization / s.seconds_total, s.residual, error.has_value(), error.value_or(ErrorMm{}), s.converged};
+}
+
+// The median over starts of each column; the worst residual and max error; converged if all are.
+Summary median_summary(const std::vector<Summary>& all) {
+  const auto column = [&](auto field) {
+    std::vector<double> v;
+    for (const Summary& s : all) v.push_back(field(s));
+    return v;
+  };
+  Summary m;
+  m.seconds = median(column([](const Summary& s) { return s.seconds; }));
+  m.iterations = median(column([](const Summary& s) { return s.iterations; }));
+  m.factorizations = median(column([](const Summary& s) { return s.factorizations; }));
+  m.share = median(column([](const Summary& s) { return s.share; }));
+  const std::vector<double> residuals = column([](const Summary& s) { return s.residual; });
+  m.residual = *std::max_element(residuals.begin(), residuals.end());
+  m.has_error = std::all_of(all.begin(), all.end(), [](const Summary& s) { return s.has_error; });
+  m.error.mean = median(column([](const Summary& s) { return s.error.mean; }));
+  const std::vector<double> maxima = column([](const Summary& s) { return s.error.max; });
+  m.error.max = *std::max_element(maxima.begin(), maxima.end());
+  m.converged = std::all_of(all.begin(), all.end(), [](const Summary& s) { return s.converged; });
+  return m;
+}
+
+void print_row(long triangles, const std::string& label, const Summary& s) {
+  char mean_error[32] = "-", max_error[32] = "-";
+  if (s.has_error) {
+    std::snprintf(mean_error, sizeof mean_error, "%.3f", s.error.mean);
+    std::snprintf(max_error, sizeof max_error, "%.3f", s.error.max);
+  }
+  std::printf("%9ld %-9s %10.2f %7.0f %8.0f %7.0f%% %9.2e %10s %10s%s\n", triangles, label.c_str(), s.seconds, s.iterations,
+              s.factorizations, 100 * s.share, s.residual, mean_error, max_error, s.converged ? "" : "  (not converged)");
+  std::fflush(stdout);
+}
+
+// The stored starts for a mesh of `triangles` triangles in `folder`: folder/skirt-TRIANGLES-K.ply,
+// K = 1, 2, ... while the files exist.
+std::vector<std::string> stored_start_paths(const std::string& folder, long triangles) {
+  std::vector<std::string> paths;
+  for (int k = 1;; ++k) {
+    const std::string path = folder + "/skirt-" + std::to_string(triangles) + "-" + std::to_string(k) + ".ply";
+    if (!std::ifstream(path)) return paths;
+    paths.push_back(path);
+  }
+}
 } // namespace
 
 int main(int argc, char** argv) {
@@ -92,6 +152,8 @@ int main(int argc, char** argv) {
   double time_step = DrapeSettings{}.time_step;
   std::string metric = "laplacian";
   std::vector<double> perturbations;
+  std::string warm_from = "bench/starts", write_starts;
+  int start_count = 3;
   app.add_option("--sizes", sizes, "target triangle counts")->delimiter(',');
   app.add_option("--runs", runs, "runs per preset (the median is reported)")->check(CLI::PositiveNumber);
   app.add_option("--body", body_path, "body mesh");
@@ -125,6 +187,15 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->check(CLI::PositiveNumber)
       ->excludes(no_reference_flag);
+  app.add_option("--warm-from", warm_from,
+                 "where the warm rows start: from each stored cold equilibrium for the size in this folder "
+                 "(FOLDER/skirt-TRIANGLES-K.ply, K = 1, 2, ...; bench/starts holds the committed ones), with the median "
+                 "over them in the CSV, so that the start does not change with the solver under test; 'previous', or a "
+                 "size with none stored: from this run's cold reference (or cold accurate drape)");
+  app.add_option("--write-starts", write_starts,
+                 "write --start-count cold equilibria per size to this folder (tolerance 1e-9, from the sewn placement "
+                 "moved by up to 1 um, seeds 1, 2, ...: each ends in its own fold arrangement), then stop");
+  app.add_option("--start-count", start_count, "how many starts --write-starts writes per size")->check(CLI::PositiveNumber);
   app.add_flag("--trace", trace,
                "print every Newton iteration of the timed solves on stderr (factorisations so far, residual, step, damping)");
   CLI11_PARSE(app, argc, argv);
@@ -158,11 +229,25 @@ int main(int argc, char** argv) {
     std::printf("%s\n%9s %-9s %10s %7s %8s %8s %9s %10s %10s\n", title, "triangles", "preset", "median [s]", "Newton", "factor.",
                 "factor.%", "residual", "mean [mm]", "max [mm]");
   };
-  // Both presets from `start`, each timed `runs` times, against `reference` (none: null).
-  // Returns the last accurate drape (or the last drape).
+  // One line of the CSV `out` and one row of the cost growth.
+  const auto record = [&](const char* start_name, long triangles, const std::string& preset, const Summary& s,
+                          std::ofstream& out) {
+    if (out.is_open())
+      out << triangles << ',' << preset << ',' << s.seconds << ',' << s.iterations << ',' << s.factorizations << ','
+          << s.share << ',' << s.residual << ',' << (s.has_error ? (std::ostringstream() << s.error.mean).str() : "") << ','
+          << (s.has_error ? (std::ostringstream() << s.error.max).str() : "") << ',' << (s.converged ? 1 : 0) << '\n';
+    if (s.converged) rows.push_back({start_name, preset, static_cast<double>(triangles), s.seconds, s.iterations});
+  };
+  // Both presets from `start`, each timed `runs` times, against `reference` (none: null); prints
+  // a row per preset, and with `follow` writes the last run's error along the solve to the
+  // trajectory CSV. Returns the presets' summaries and the last accurate drape (or the last drape).
+  struct Timed {
+    std::vector<std::pair<std::string, Summary>> presets;
+    MatrixX3d drape;
+  };
   const auto time_presets = [&](const char* start_name, const ClothModel& model, const MatrixX3d& start,
-                                const DrapeResult* reference, std::ofstream& out) {
-    MatrixX3d drape = start;
+                                const DrapeResult* reference, bool follow_trajectory) {
+    Timed timed{{}, start};
     bool have_accurate = false;
     for (const SolverPreset preset : {SolverPreset::Accurate, SolverPreset::Fast}) {
       if (std::find(presets.begin(), presets.end(), to_string(preset)) == presets.end()) continue;
@@ -178,7 +263,7 @@ int main(int argc, char** argv) {
         ErrorMm error;
       };
       std::vector<Point> along;
-      const bool follow = reference && trajectory.is_open();
+      const bool follow = reference && trajectory.is_open() && follow_trajectory;
       for (int r = 0; r < runs; ++r) {
         if (follow) along.assign(1, {0, 0.0, std::numeric_limits<double>::quiet_NaN(), error_mm(start, reference->V)});
         const bool last = r + 1 == runs;
@@ -189,25 +274,11 @@ int main(int argc, char** argv) {
         });
         seconds.push_back(result.stats.seconds_total);
       }
-      const DrapeStats& s = result.stats;
-      const double share = s.seconds_factorization / s.seconds_total;
-      char mean_error[32] = "-", max_error[32] = "-";
-      double mean_mm = 0, max_mm = 0;  // full precision for the CSV (the plot's log axis)
-      if (reference) {
-        const ErrorMm e = error_mm(result.V, reference->V);
-        mean_mm = e.mean;
-        max_mm = e.max;
-        std::snprintf(mean_error, sizeof mean_error, "%.3f", mean_mm);
-        std::snprintf(max_error, sizeof max_error, "%.3f", max_mm);
-      }
-      std::printf("%9ld %-9s %10.2f %7d %8d %7.0f%% %9.2e %10s %10s%s\n", static_cast<long>(model.triangles.size()),
-                  to_string(preset), median(seconds), s.newton_iterations, s.factorizations, 100 * share, s.residual, mean_error,
-                  max_error, s.converged ? "" : "  (not converged)");
-      std::fflush(stdout);
-      if (out.is_open())
-        out << model.triangles.size() << ',' << to_string(preset) << ',' << median(seconds) << ',' << s.newton_iterations << ','
-            << s.factorizations << ',' << share << ',' << s.residual << ',' << (reference ? (std::ostringstream() << mean_mm).str() : "") << ','
-            << (reference ? (std::ostringstream() << max_mm).str() : "") << ',' << (s.converged ? 1 : 0) << '\n';
+      std::optional<ErrorMm> error;
+      if (reference) error = error_mm(result.V, reference->V);
+      const Summary row = summary(result.stats, median(seconds), error);
+      print_row(static_cast<long>(model.triangles.size()), to_string(preset), row);
+      timed.presets.emplace_back(to_string(preset), row);
       if (follow) {
         for (const Point& p : along) {
           trajectory << start_name << ',' << model.triangles.size() << ',' << to_string(preset) << ',' << p.iterations << ','
@@ -225,16 +296,13 @@ int main(int argc, char** argv) {
         }
         std::printf("\n");
       }
-      if (s.converged)
-        rows.push_back({start_name, to_string(preset), static_cast<double>(model.triangles.size()), median(seconds),
-                        static_cast<double>(s.newton_iterations)});
-      if (preset == SolverPreset::Accurate || !have_accurate) drape = result.V;
+      if (preset == SolverPreset::Accurate || !have_accurate) timed.drape = result.V;
       have_accurate = have_accurate || preset == SolverPreset::Accurate;
     }
     if (reference)
       std::printf("%9s reference: %d Newton iterations, residual %.2e%s\n", "", reference->stats.newton_iterations,
                   reference->stats.residual, reference->stats.converged ? "" : " (not converged)");
-    return drape;
+    return timed;
   };
   // The accurate drape from `start` perturbed by each amplitude, `runs` seeds each, against
   // `reference`: where it ends, and at what cost.
@@ -271,28 +339,93 @@ int main(int argc, char** argv) {
     if (!material_name.empty()) sample.scene.material = *material_preset(material_name);
     const std::vector<int> pinned = pinned_vertices(sample.scene, sample.garment.V);
     const ClothModel model = cloth_model(sample.garment, sample.scene, &body, pinned);
+    const long triangles = static_cast<long>(model.triangles.size());
+    const std::uint64_t fingerprint = mesh_fingerprint(sample.garment);
+    if (!write_starts.empty()) {
+      // Cold equilibria at the reference tolerance, from the sewn placement moved by up to 1 um:
+      // the cold drape is chaotic, so each seed ends in its own fold arrangement.
+      constexpr double kStartPerturbation = 1e-6;  // [m]; any move does, this one is far below the mesh
+      std::vector<MatrixX3d> written;
+      for (int k = 1; k <= start_count; ++k) {
+        const DrapeResult result =
+            solve_drape(model, perturbed(sample.garment.V, kStartPerturbation, static_cast<unsigned>(k)), reference_settings);
+        if (!result.stats.converged) {
+          std::fprintf(stderr, "drape_bench: the cold drape of %ld triangles, seed %d, did not converge (residual %.2e)\n",
+                       triangles, k, result.stats.residual);
+          return 1;
+        }
+        const std::string path = write_starts + "/skirt-" + std::to_string(triangles) + "-" + std::to_string(k) + ".ply";
+        char comment[200];
+        std::snprintf(comment, sizeof comment,
+                      "cold equilibrium of the skirt sample, %ld triangles: drape_bench --write-starts, seed %d, "
+                      "%d Newton iterations, residual %.2e",
+                      triangles, k, result.stats.newton_iterations, result.stats.residual);
+        write_stored_start(path, result.V, fingerprint, comment);
+        std::printf("%s: %d Newton iterations, %.2f s, residual %.2e; mean distance to the earlier starts [mm]:", path.c_str(),
+                    result.stats.newton_iterations, result.stats.seconds_total, result.stats.residual);
+        for (const MatrixX3d& other : written) std::printf(" %.2f", error_mm(result.V, other).mean);
+        std::printf("\n");
+        std::fflush(stdout);
+        written.push_back(result.V);
+      }
+      continue;
+    }
+    // The warm rows' starts: the stored cold equilibria for this mesh, else this run's cold drape.
+    std::vector<std::pair<std::string, MatrixX3d>> warm_starts;
+    if (warm && warm_from != "previous")
+      for (const std::string& path : stored_start_paths(warm_from, triangles)) try {
+          warm_starts.emplace_back(path, read_stored_start(path, sample.garment.V.rows(), fingerprint));
+        } catch (const std::exception& e) {
+          std::fprintf(stderr, "%s\n", e.what());
+          return 1;
+        }
     std::optional<DrapeResult> reference;
-    if (!no_reference) reference = solve_drape(model, sample.garment.V, reference_settings);
+    if (!no_reference && (cold || (warm && warm_starts.empty())))
+      reference = solve_drape(model, sample.garment.V, reference_settings);
     MatrixX3d previous = reference ? reference->V : MatrixX3d();
     if (cold) {
       table_header("cold start: from the sewn placement");
-      const MatrixX3d drape = time_presets("cold", model, sample.garment.V, reference ? &*reference : nullptr, csv);
-      if (!reference) previous = drape;
+      const Timed timed = time_presets("cold", model, sample.garment.V, reference ? &*reference : nullptr, true);
+      for (const auto& [preset, row] : timed.presets) record("cold", triangles, preset, row, csv);
+      if (!reference) previous = timed.drape;
       if (reference) perturb_start(model, sample.garment.V, *reference);
     }
     if (warm) {
-      if (previous.rows() == 0) previous = solve_drape(model, sample.garment.V, defaults).V;
+      char title[240];
+      if (warm_starts.empty()) {
+        if (previous.rows() == 0) previous = solve_drape(model, sample.garment.V, defaults).V;
+        warm_starts.emplace_back("", previous);
+        std::snprintf(title, sizeof title, "warm start: patterns %.0f %% wider, from the previous drape (the cold %s)",
+                      100 * ease, reference ? "reference" : "accurate drape");
+      } else {
+        std::snprintf(title, sizeof title,
+                      "warm start: patterns %.0f %% wider, from each of the %zu stored cold equilibria (%s/skirt-%ld-K.ply)",
+                      100 * ease, warm_starts.size(), warm_from.c_str(), triangles);
+      }
       Garment wider = sample.garment;
       wider.P.col(0) *= 1.0 + ease;
       const ClothModel wider_model = cloth_model(wider, sample.scene, &body, pinned);
-      std::optional<DrapeResult> wider_reference;
-      if (!no_reference) wider_reference = solve_drape(wider_model, previous, reference_settings);
-      char title[160];
-      std::snprintf(title, sizeof title, "warm start: patterns %.0f %% wider, from the previous drape (the cold %s)", 100 * ease,
-                    reference ? "reference" : "accurate drape");
       table_header(title);
-      time_presets("warm", wider_model, previous, wider_reference ? &*wider_reference : nullptr, warm_csv);
-      if (wider_reference) perturb_start(wider_model, previous, *wider_reference);
+      std::vector<std::pair<std::string, std::vector<Summary>>> per_preset;  // over the starts
+      for (size_t i = 0; i < warm_starts.size(); ++i) {
+        const auto& [name, start] = warm_starts[i];
+        if (!name.empty()) std::printf("%9s from %s\n", "", name.c_str());
+        std::optional<DrapeResult> wider_reference;
+        if (!no_reference) wider_reference = solve_drape(wider_model, start, reference_settings);
+        // Only the first start's solves go to the trajectory CSV (one line per size in the plot).
+        const Timed timed = time_presets("warm", wider_model, start, wider_reference ? &*wider_reference : nullptr, i == 0);
+        for (size_t p = 0; p < timed.presets.size(); ++p) {
+          if (i == 0) per_preset.emplace_back(timed.presets[p].first, std::vector<Summary>{});
+          per_preset[p].second.push_back(timed.presets[p].second);
+        }
+        if (wider_reference) perturb_start(wider_model, start, *wider_reference);
+      }
+      if (warm_starts.size() > 1) std::printf("%9s median over the %zu starts (residual, max error: the worst)\n", "", warm_starts.size());
+      for (const auto& [preset, all] : per_preset) {
+        const Summary row = all.size() > 1 ? median_summary(all) : all.front();
+        if (all.size() > 1) print_row(triangles, preset, row);
+        record("warm", triangles, preset, row, warm_csv);
+      }
     }
   }
 
