@@ -154,9 +154,13 @@ int main(int argc, char** argv) {
   std::vector<double> perturbations;
   std::string warm_from = "bench/starts", write_starts;
   int start_count = 3;
+  std::string mesh = "grid";
   app.add_option("--sizes", sizes, "target triangle counts")->delimiter(',');
   app.add_option("--runs", runs, "runs per preset (the median is reported)")->check(CLI::PositiveNumber);
   app.add_option("--body", body_path, "body mesh");
+  app.add_option("--mesh", mesh, "the skirt's triangulation (make-sample --mesh): grid or isotropic")
+      ->check(CLI::IsMember({"grid", "isotropic"}))
+      ->capture_default_str();
   app.add_option("--csv", csv_path, "CSV to write (cold starts; bench/drape_bench.csv holds the committed rows)");
   app.add_option("--warm-csv", warm_csv_path, "CSV to write (warm starts; bench/drape_bench_warm.csv)");
   app.add_option("--starts", starts, "cold (from the sewn placement), warm (re-drape after the patterns widen)")
@@ -334,6 +338,7 @@ int main(int argc, char** argv) {
   for (int size : sizes) {
     SampleParams params;
     params.triangles = size;
+    params.mesh = mesh == "isotropic" ? SampleMesh::Isotropic : SampleMesh::Grid;
     SampleScene sample = make_sample("skirt", params, &body.V);
     sample.scene.body = BodySettings{"body"};
     if (!material_name.empty()) sample.scene.material = *material_preset(material_name);
