@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <optional>
@@ -210,6 +211,16 @@ int main(int argc, char** argv) {
                  s.factorizations, s.residual, s.step_fraction, s.step_length, s.damping);
   };
 
+  const bool warm_requested = std::find(starts.begin(), starts.end(), "warm") != starts.end();
+  if (write_starts.empty() && warm_requested && warm_from != "previous" && !std::filesystem::is_directory(warm_from)) {
+    std::fprintf(stderr, "drape_bench: %s: no such folder of stored starts (run from the repository root, or give "
+                 "--warm-from previous)\n", warm_from.c_str());
+    return 1;
+  }
+  if (!write_starts.empty() && !std::filesystem::is_directory(write_starts)) {
+    std::fprintf(stderr, "drape_bench: %s: no such folder\n", write_starts.c_str());
+    return 1;
+  }
   const TriangleMesh body = read_body_mesh(body_path);
   const bool cold = std::find(starts.begin(), starts.end(), "cold") != starts.end();
   const bool warm = std::find(starts.begin(), starts.end(), "warm") != starts.end();
