@@ -221,7 +221,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "drape_bench: %s: no such folder\n", write_starts.c_str());
     return 1;
   }
-  const TriangleMesh body = read_body_mesh(body_path);
+  TriangleMesh body;
+  try {
+    body = read_body_mesh(body_path);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "drape_bench: %s (run from the repository root, or give --body)\n", e.what());
+    return 1;
+  }
   const bool cold = std::find(starts.begin(), starts.end(), "cold") != starts.end();
   const bool warm = std::find(starts.begin(), starts.end(), "warm") != starts.end();
   const char* header = "triangles,preset,median_s,newton_iterations,factorizations,factorization_share,residual,mean_error_mm,max_error_mm,converged\n";
