@@ -125,14 +125,14 @@ void print_row(long triangles, const std::string& label, const Summary& s) {
   std::fflush(stdout);
 }
 
-// The stored starts for a mesh of `triangles` triangles in `folder`: folder/skirt-TRIANGLES-K.ply,
-// K = 1, 2, ... while the files exist.
+// The stored starts for a mesh of `triangles` triangles in `folder`: K = 1, 2, ... while the
+// files exist.
 std::vector<std::string> stored_start_paths(const std::string& folder, long triangles) {
   std::vector<std::string> paths;
   for (int k = 1;; ++k) {
-    const std::string path = folder + "/skirt-" + std::to_string(triangles) + "-" + std::to_string(k) + ".ply";
+    std::string path = stored_start_path(folder, triangles, k);
     if (!std::ifstream(path)) return paths;
-    paths.push_back(path);
+    paths.push_back(std::move(path));
   }
 }
 } // namespace
@@ -211,8 +211,9 @@ int main(int argc, char** argv) {
                  s.factorizations, s.residual, s.step_fraction, s.step_length, s.damping);
   };
 
-  const bool warm_requested = std::find(starts.begin(), starts.end(), "warm") != starts.end();
-  if (write_starts.empty() && warm_requested && warm_from != "previous" && !std::filesystem::is_directory(warm_from)) {
+  const bool cold = std::find(starts.begin(), starts.end(), "cold") != starts.end();
+  const bool warm = std::find(starts.begin(), starts.end(), "warm") != starts.end();
+  if (write_starts.empty() && warm && warm_from != "previous" && !std::filesystem::is_directory(warm_from)) {
     std::fprintf(stderr, "drape_bench: %s: no such folder of stored starts (run from the repository root, or give "
                  "--warm-from previous)\n", warm_from.c_str());
     return 1;
@@ -228,8 +229,6 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "drape_bench: %s (run from the repository root, or give --body)\n", e.what());
     return 1;
   }
-  const bool cold = std::find(starts.begin(), starts.end(), "cold") != starts.end();
-  const bool warm = std::find(starts.begin(), starts.end(), "warm") != starts.end();
   const char* header = "triangles,preset,median_s,newton_iterations,factorizations,factorization_share,residual,mean_error_mm,max_error_mm,converged\n";
   std::ofstream csv, warm_csv;
   if (cold && !csv_path.empty()) (csv.open(csv_path), csv << header);
@@ -376,7 +375,7 @@ int main(int argc, char** argv) {
                        triangles, k, result.stats.residual);
           return 1;
         }
-        const std::string path = write_starts + "/skirt-" + std::to_string(triangles) + "-" + std::to_string(k) + ".ply";
+        const std::string path = stored_start_path(write_starts, triangles, k);
         char comment[200];
         std::snprintf(comment, sizeof comment,
                       "cold equilibrium of the skirt sample, %ld triangles: drape_bench --write-starts, seed %d, "

@@ -26,7 +26,18 @@ void hash_bytes(std::uint64_t& h, const Matrix& m) {
 }
 
 constexpr const char* kFingerprintComment = "comment foldsketch-rest-mesh ";
+
+// The fingerprint as the header writes it: 16 hex digits.
+std::string fingerprint_hex(std::uint64_t fingerprint) {
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fingerprint));
+  return hex;
+}
 }  // namespace
+
+std::string stored_start_path(const std::string& folder, long triangles, int k) {
+  return folder + "/skirt-" + std::to_string(triangles) + "-" + std::to_string(k) + ".ply";
+}
 
 std::uint64_t mesh_fingerprint(const Garment& g) {
   std::uint64_t h = kFnvOffset;
@@ -39,10 +50,8 @@ std::uint64_t mesh_fingerprint(const Garment& g) {
 
 void write_stored_start(const std::string& path, const MatrixX3d& x, std::uint64_t fingerprint, const std::string& comment) {
   write_file_atomically(path, [&](std::ostream& out) {
-    char hex[17];
-    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fingerprint));
     out << "ply\nformat binary_little_endian 1.0\ncomment " << comment << '\n'
-        << kFingerprintComment << hex << "\nelement vertex " << x.rows()
+        << kFingerprintComment << fingerprint_hex(fingerprint) << "\nelement vertex " << x.rows()
         << "\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
     for (Eigen::Index v = 0; v < x.rows(); ++v)
       for (int c = 0; c < 3; ++c) {
@@ -70,9 +79,7 @@ MatrixX3d read_stored_start(const std::string& path, Eigen::Index vertices, std:
     if (keyword == "format" && line != "format binary_little_endian 1.0")
       throw InputError(path, line_number, "expected 'format binary_little_endian 1.0', found '" + line + "'");
     if (line.rfind(kFingerprintComment, 0) == 0) {
-      const std::string found = line.substr(std::strlen(kFingerprintComment));
-      char hex[17];
-      std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fingerprint));
+      const std::string found = line.substr(std::strlen(kFingerprintComment)), hex = fingerprint_hex(fingerprint);
       if (found != hex)
         throw InputError(path, line_number,
                          "the start belongs to another mesh (fingerprint " + found + ", this mesh's " + hex +

@@ -20,6 +20,10 @@ namespace foldsketch {
 // the sample's mesh, patterns or placement change.
 std::uint64_t mesh_fingerprint(const Garment& g);
 
+// Where start k (1, 2, ...) of the skirt mesh with `triangles` triangles is kept in `folder`:
+// folder/skirt-TRIANGLES-K.ply.
+std::string stored_start_path(const std::string& folder, long triangles, int k);
+
 // Writes x atomically (formats/atomic_file.h). `comment` goes into the header (one line).
 void write_stored_start(const std::string& path, const MatrixX3d& x, std::uint64_t fingerprint, const std::string& comment);
 

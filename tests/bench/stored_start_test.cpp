@@ -90,9 +90,8 @@ TEST_F(StoredStart, CommittedStartsMatchTheSkirtMeshes) {
     SampleParams params;
     params.triangles = target;
     const Garment g = make_sample("skirt", params, &body.V).garment;
-    const std::string stem = test::source_path("bench/starts/skirt-" + std::to_string(g.F.rows()) + "-");
     for (int k = 1; k <= 3; ++k) {
-      const std::string file = stem + std::to_string(k) + ".ply";
+      const std::string file = stored_start_path(test::source_path("bench/starts"), static_cast<long>(g.F.rows()), k);
       SCOPED_TRACE(file);
       const MatrixX3d x = read_stored_start(file, g.V.rows(), mesh_fingerprint(g));
       EXPECT_TRUE(x.allFinite());
