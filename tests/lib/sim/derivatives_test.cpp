@@ -60,7 +60,7 @@ TEST(Derivatives, MembraneAtRandomConfigurations) {
   const Material cotton = *material_preset("cotton-thin");
   Material anisotropic = *material_preset("denim");
   anisotropic.poisson = 0.3;
-  // Plain StVK, and with compression softened to 1 % (the engine's default).
+  // Plain StVK (the engine's default), and with compression softened to 1 % (ClothParams).
   for (const auto& [m, compression] : {std::pair{cotton, 1.0}, std::pair{anisotropic, 1.0}, std::pair{cotton, 0.01}}) {
     const MembraneStiffness k = membrane_stiffness(m, compression);
     // A regular triangle, a 0.5-degree sliver and a needle of 0.01 degrees.
