@@ -28,6 +28,7 @@
 #include <CLI/CLI.hpp>
 
 #include "formats/body_mesh.h"
+#include "garment/drape_transfer.h"
 #include "samples/sample_scenes.h"
 #include "sim/drape_solver.h"
 #include "stored_start.h"
@@ -156,6 +157,7 @@ int main(int argc, char** argv) {
   std::string warm_from = "bench/starts", write_starts;
   int start_count = 3;
   std::string mesh = "grid";
+  std::vector<int> coarse_sizes;
   app.add_option("--sizes", sizes, "target triangle counts")->delimiter(',');
   app.add_option("--runs", runs, "runs per preset (the median is reported)")->check(CLI::PositiveNumber);
   app.add_option("--body", body_path, "body mesh");
@@ -201,9 +203,17 @@ int main(int argc, char** argv) {
                  "write --start-count cold equilibria per size to this folder (tolerance 1e-9, from the sewn placement "
                  "moved by up to 1 um, seeds 1, 2, ...: each ends in its own fold arrangement), then stop");
   app.add_option("--start-count", start_count, "how many starts --write-starts writes per size")->check(CLI::PositiveNumber);
+  app.add_option("--coarse", coarse_sizes,
+                 "cold rows: also drape coarse-to-fine, through skirts of these triangle counts (those below the size, "
+                 "coarsest first): each level drapes (accurate preset) from the one before, carried over by "
+                 "transfer_drape; the row is the finest level's, its time that of all levels, the median over --runs "
+                 "paths (run r starts the coarsest level moved by up to 1 um, seed r)")
+      ->delimiter(',')
+      ->check(CLI::PositiveNumber);
   app.add_flag("--trace", trace,
                "print every Newton iteration of the timed solves on stderr (factorisations so far, residual, step, damping)");
   CLI11_PARSE(app, argc, argv);
+  std::sort(coarse_sizes.begin(), coarse_sizes.end());
   DrapeSettings defaults;  // what every drape here starts from
   defaults.proximal_metric = metric == "mass" ? ProximalMetric::Mass : ProximalMetric::Laplacian;
   const DrapeProgress tracer = [](const DrapeStats& s, const MatrixX3d&) {
@@ -348,6 +358,50 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
     }
   };
+  // Cold drapes coarse-to-fine: through skirts of --coarse sizes, each level draped (accurate
+  // preset) from the level before, carried over by transfer_drape; the row is the finest
+  // level's, its time that of all levels. Run r starts the coarsest level moved by up to 1 um
+  // (seed r + 1): the cold drape is chaotic, so each run takes its own path, and the median is
+  // over paths (no error column: another path ends in another fold arrangement).
+  const auto coarse_to_fine = [&](const SampleParams& params, const ClothModel& model, const SampleScene& sample) {
+    std::vector<double> seconds;
+    std::vector<Summary> finest;
+    std::string levels;
+    std::vector<int> chain;
+    for (int level : coarse_sizes)
+      if (level < params.triangles) chain.push_back(level);
+    chain.push_back(params.triangles);
+    for (int r = 0; r < runs; ++r) {
+      levels += (r ? "\n          run " : "run ") + std::to_string(r + 1) + ":";
+      const auto t0 = std::chrono::steady_clock::now();
+      std::optional<SampleScene> before;
+      DrapeResult drape;
+      for (size_t level = 0; level < chain.size(); ++level) {
+        const bool last = level + 1 == chain.size();
+        SampleParams level_params = params;
+        level_params.triangles = chain[level];
+        SampleScene s = last ? sample : make_sample("skirt", level_params, &body.V);
+        s.scene = sample.scene;
+        std::optional<ClothModel> own;
+        if (!last) own.emplace(cloth_model(s.garment, s.scene, &body, pinned_vertices(s.scene, s.garment.V)));
+        const ClothModel& m = last ? model : *own;
+        const MatrixX3d start = before ? transfer_drape(before->garment, drape.V, s.garment)
+                                       : perturbed(s.garment.V, 1e-6, static_cast<unsigned>(r + 1));
+        drape = solve_drape(m, start, timed_settings(SolverPreset::Accurate), trace ? tracer : DrapeProgress{});
+        char text[120];
+        std::snprintf(text, sizeof text, "%s %zu: %d it. %.2f s", level ? "," : "", m.triangles.size(),
+                      drape.stats.newton_iterations, drape.stats.seconds_total);
+        levels += text;
+        before = std::move(s);
+      }
+      seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      finest.push_back(summary(drape.stats, seconds.back(), std::nullopt));
+    }
+    Summary row = median_summary(finest);
+    row.seconds = median(seconds);
+    print_row(static_cast<long>(model.triangles.size()), "c2f", row);
+    std::printf("%9s levels: %s\n", "", levels.c_str());
+  };
   DrapeSettings reference_settings = defaults;
   reference_settings.tolerance = 1e-9;
   reference_settings.max_steps = 20000;
@@ -410,6 +464,7 @@ int main(int argc, char** argv) {
       for (const auto& [preset, row] : timed.presets) record("cold", triangles, preset, row, csv);
       if (!reference) previous = timed.drape;
       if (reference) perturb_start(model, sample.garment.V, *reference);
+      if (!coarse_sizes.empty()) coarse_to_fine(params, model, sample);
     }
     if (warm) {
       char title[240];
