@@ -6,41 +6,24 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "core/error.h"
+#include "mesh/triangle_geometry.h"
 
 namespace foldsketch {
 namespace {
 
-// Barycentric coordinates of the point of triangle (a, b, c) nearest to q, and its squared
-// distance to q.
+// Barycentric weights of the point of a pattern triangle nearest to q, and its squared distance.
 struct Nearest {
   Eigen::Vector3d weights;
   double distance2 = std::numeric_limits<double>::infinity();
 };
 
-Nearest nearest_on_segment(const Vector2d& q, const Vector2d& a, const Vector2d& b, int ia, int ib) {
-  const Vector2d ab = b - a;
-  const double length2 = ab.squaredNorm();
-  const double t = length2 > 0.0 ? std::clamp((q - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-  Nearest n;
-  n.weights.setZero();
-  n.weights(ia) = 1.0 - t;
-  n.weights(ib) = t;
-  n.distance2 = (a + t * ab - q).squaredNorm();
-  return n;
-}
-
 Nearest nearest_on_triangle(const Vector2d& q, const Vector2d& a, const Vector2d& b, const Vector2d& c) {
-  const double area2 = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
-  if (std::abs(area2) > 0.0) {
-    const auto cross = [](const Vector2d& u, const Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); };
-    const Eigen::Vector3d w(cross(b - q, c - q) / area2, cross(c - q, a - q) / area2, cross(a - q, b - q) / area2);
-    if (w.minCoeff() >= 0.0) return {w, 0.0};
-  }
-  Nearest best = nearest_on_segment(q, a, b, 0, 1);
-  for (const Nearest& n : {nearest_on_segment(q, b, c, 1, 2), nearest_on_segment(q, c, a, 2, 0)})
-    if (n.distance2 < best.distance2) best = n;
-  return best;
+  const auto lifted = [](const Vector2d& p) { return Vector3d(p.x(), p.y(), 0.0); };
+  const Vector3d w = closest_point_on_triangle(lifted(q), lifted(a), lifted(b), lifted(c)).weights;
+  return {w, (w(0) * a + w(1) * b + w(2) * c - q).squaredNorm()};
 }
 
 // The source triangles of one panel in a uniform grid of buckets over their bounding box, for
@@ -48,28 +31,23 @@ Nearest nearest_on_triangle(const Vector2d& q, const Vector2d& a, const Vector2d
 class PanelGrid {
  public:
   PanelGrid(const Garment& g, const std::vector<int>& faces) : g_(g), faces_(faces) {
-    lo_ = Vector2d::Constant(std::numeric_limits<double>::infinity());
-    Vector2d hi = -lo_;
-    for (int f : faces)
-      for (int k = 0; k < 3; ++k) {
-        lo_ = lo_.cwiseMin(g.P.row(g.FP(f, k)).transpose());
-        hi = hi.cwiseMax(g.P.row(g.FP(f, k)).transpose());
-      }
+    std::vector<Eigen::AlignedBox2d> boxes(faces.size());
+    Eigen::AlignedBox2d panel;
+    for (size_t i = 0; i < faces.size(); ++i) {
+      for (int k = 0; k < 3; ++k) boxes[i].extend(g.P.row(g.FP(faces[i], k)).transpose());
+      panel.extend(boxes[i]);
+    }
+    lo_ = panel.min();
     // About two triangles per bucket.
-    const Vector2d extent = (hi - lo_).cwiseMax(1e-12);
+    const Vector2d extent = panel.sizes().cwiseMax(1e-12);
     const double cell = std::sqrt(extent.prod() / std::max<size_t>(1, faces.size()) * 2.0);
     nx_ = std::max(1, static_cast<int>(std::ceil(extent.x() / cell)));
     ny_ = std::max(1, static_cast<int>(std::ceil(extent.y() / cell)));
     cell_ = Vector2d(extent.x() / nx_, extent.y() / ny_);
     buckets_.resize(static_cast<size_t>(nx_) * ny_);
     for (size_t i = 0; i < faces.size(); ++i) {
-      Vector2d a = g.P.row(g.FP(faces[i], 0)).transpose(), b = a;
-      for (int k = 1; k < 3; ++k) {
-        a = a.cwiseMin(g.P.row(g.FP(faces[i], k)).transpose());
-        b = b.cwiseMax(g.P.row(g.FP(faces[i], k)).transpose());
-      }
-      const auto [x0, y0] = cell_of(a);
-      const auto [x1, y1] = cell_of(b);
+      const auto [x0, y0] = cell_of(boxes[i].min());
+      const auto [x1, y1] = cell_of(boxes[i].max());
       for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x) buckets_[static_cast<size_t>(y) * nx_ + x].push_back(static_cast<int>(i));
     }

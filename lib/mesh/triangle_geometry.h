@@ -19,4 +19,14 @@ MatrixX3d internal_angles(const Eigen::Ref<const MatrixXd>& V, const MatrixX3i& 
 // Smallest interior angle of each triangle [rad]; 0 for a degenerate triangle.
 VectorXd min_angles(const Eigen::Ref<const MatrixXd>& V, const MatrixX3i& F);
 
+// The closest point on triangle (a, b, c) to p: barycentric weights (summing to 1) and which
+// feature it lies on: 0 the face, 1-3 the edges ab, bc, ca, 4-6 the corners a, b, c.
+struct TriangleClosestPoint {
+  Vector3d weights;
+  int feature = 0;
+};
+TriangleClosestPoint closest_point_on_triangle(const Vector3d& p, const Vector3d& a, const Vector3d& b, const Vector3d& c);
+
+double point_triangle_distance(const Vector3d& p, const Vector3d& a, const Vector3d& b, const Vector3d& c);
+
 } // namespace foldsketch

@@ -12,7 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "core/error.h"
-#include "sim/self_contact.h"
+#include "mesh/triangle_geometry.h"
 
 namespace foldsketch {
 namespace {

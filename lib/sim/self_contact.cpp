@@ -145,59 +145,6 @@ bool excluded(const SelfContactModel& model, int v, const int* corners, int coun
 
 } // namespace
 
-TriangleClosestPoint closest_point_on_triangle(const Vector3d& p, const Vector3d& a, const Vector3d& b, const Vector3d& c) {
-  // Ericson, Real-Time Collision Detection (2005), 5.1.5: Voronoi regions in turn.
-  const Vector3d ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0.0 && d2 <= 0.0) return {{1, 0, 0}, 4};
-  const Vector3d bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0.0 && d4 <= d3) return {{0, 1, 0}, 5};
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
-    const double t = d1 / (d1 - d3);
-    return {{1 - t, t, 0}, 1};
-  }
-  const Vector3d cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0.0 && d5 <= d6) return {{0, 0, 1}, 6};
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
-    const double t = d2 / (d2 - d6);
-    return {{1 - t, 0, t}, 3};
-  }
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) {
-    const double t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return {{0, 1 - t, t}, 2};
-  }
-  const double sum = va + vb + vc;
-  if (!(sum > 0.0)) {  // collapsed triangle: the nearest of its edges
-    TriangleClosestPoint best{{1, 0, 0}, 4};
-    double best_distance = INFINITY;
-    const Vector3d x[3] = {a, b, c};
-    for (int e = 0; e < 3; ++e) {
-      const Vector3d s = x[e], d = x[(e + 1) % 3] - s;
-      const double t = d.squaredNorm() > 0.0 ? std::clamp((p - s).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-      const double dist = (p - s - t * d).norm();
-      if (dist < best_distance) {
-        best_distance = dist;
-        best.weights.setZero();
-        best.weights(e) = 1 - t;
-        best.weights((e + 1) % 3) += t;
-        best.feature = d.squaredNorm() > 0.0 ? e + 1 : 4 + e;  // a zero-length edge is a corner
-      }
-    }
-    return best;
-  }
-  return {{va / sum, vb / sum, vc / sum}, 0};
-}
-
-double point_triangle_distance(const Vector3d& p, const Vector3d& a, const Vector3d& b, const Vector3d& c) {
-  const Vector3d w = closest_point_on_triangle(p, a, b, c).weights;
-  return (p - w(0) * a - w(1) * b - w(2) * c).norm();
-}
-
 double segment_segment_distance(const Vector3d& p0, const Vector3d& p1, const Vector3d& q0, const Vector3d& q1) {
   return segment_closest_parameters(p0, p1, q0, q1).distance;
 }

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "core/types.h"
+#include "mesh/triangle_geometry.h"
 #include "sim/bending.h"
 
 namespace foldsketch {
@@ -40,16 +41,6 @@ struct SelfContactModel {
   double thickness = 0;                      // [m]
   double stiffness = 0;                      // [N/m^3]
 };
-
-// The closest point on triangle (a, b, c) to p: barycentric weights (summing to 1) and which
-// feature it lies on: 0 the face, 1-3 the edges ab, bc, ca, 4-6 the corners a, b, c.
-struct TriangleClosestPoint {
-  Vector3d weights;
-  int feature = 0;
-};
-TriangleClosestPoint closest_point_on_triangle(const Vector3d& p, const Vector3d& a, const Vector3d& b, const Vector3d& c);
-
-double point_triangle_distance(const Vector3d& p, const Vector3d& a, const Vector3d& b, const Vector3d& c);
 
 // Closest points of segments p0 p1 and q0 q1: p0 + s (p1 - p0) and q0 + t (q1 - q0).
 struct SegmentClosestPoints {
