@@ -360,39 +360,38 @@ int main(int argc, char** argv) {
   };
   // Cold drapes coarse-to-fine: through skirts of --coarse sizes, each level draped (accurate
   // preset) from the level before, carried over by transfer_drape; the row is the finest
-  // level's, its time that of all levels. Run r starts the coarsest level moved by up to 1 um
-  // (seed r + 1): the cold drape is chaotic, so each run takes its own path, and the median is
-  // over paths (no error column: another path ends in another fold arrangement).
+  // level's, its time that of all levels' drapes (the coarse skirts and their models are built
+  // once, before the runs, as the finest level's are). Run r starts the coarsest level moved by
+  // up to 1 um (seed r + 1): the cold drape is chaotic, so each run takes its own path, and the
+  // median is over paths (no error column: another path ends in another fold arrangement).
   const auto coarse_to_fine = [&](const SampleParams& params, const ClothModel& model, const SampleScene& sample) {
+    std::vector<SampleScene> coarse;
+    std::vector<ClothModel> coarse_models;
+    for (int level : coarse_sizes) {
+      if (level >= params.triangles) break;
+      SampleParams level_params = params;
+      level_params.triangles = level;
+      SampleScene& s = coarse.emplace_back(make_sample("skirt", level_params, &body.V));
+      s.scene = sample.scene;
+      coarse_models.push_back(cloth_model(s.garment, s.scene, &body, pinned_vertices(s.scene, s.garment.V)));
+    }
     std::vector<double> seconds;
     std::vector<Summary> finest;
     std::string levels;
-    std::vector<int> chain;
-    for (int level : coarse_sizes)
-      if (level < params.triangles) chain.push_back(level);
-    chain.push_back(params.triangles);
     for (int r = 0; r < runs; ++r) {
       levels += (r ? "\n          run " : "run ") + std::to_string(r + 1) + ":";
       const auto t0 = std::chrono::steady_clock::now();
-      std::optional<SampleScene> before;
       DrapeResult drape;
-      for (size_t level = 0; level < chain.size(); ++level) {
-        const bool last = level + 1 == chain.size();
-        SampleParams level_params = params;
-        level_params.triangles = chain[level];
-        SampleScene s = last ? sample : make_sample("skirt", level_params, &body.V);
-        s.scene = sample.scene;
-        std::optional<ClothModel> own;
-        if (!last) own.emplace(cloth_model(s.garment, s.scene, &body, pinned_vertices(s.scene, s.garment.V)));
-        const ClothModel& m = last ? model : *own;
-        const MatrixX3d start = before ? transfer_drape(before->garment, drape.V, s.garment)
-                                       : perturbed(s.garment.V, 1e-6, static_cast<unsigned>(r + 1));
+      for (size_t level = 0; level <= coarse.size(); ++level) {
+        const Garment& garment = level < coarse.size() ? coarse[level].garment : sample.garment;
+        const ClothModel& m = level < coarse.size() ? coarse_models[level] : model;
+        const MatrixX3d start = level > 0 ? transfer_drape(coarse[level - 1].garment, drape.V, garment)
+                                          : perturbed(garment.V, 1e-6, static_cast<unsigned>(r + 1));
         drape = solve_drape(m, start, timed_settings(SolverPreset::Accurate), trace ? tracer : DrapeProgress{});
         char text[120];
         std::snprintf(text, sizeof text, "%s %zu: %d it. %.2f s", level ? "," : "", m.triangles.size(),
                       drape.stats.newton_iterations, drape.stats.seconds_total);
         levels += text;
-        before = std::move(s);
       }
       seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       finest.push_back(summary(drape.stats, seconds.back(), std::nullopt));
