@@ -35,10 +35,10 @@ std::string human(const DrapeStats& s, double tolerance, int self_vertices) {
   std::snprintf(line, sizeof line,
                 "drape-free: %s: %d steps, %d Newton iterations (%d with projected membrane elements), %d factorisations; relative force residual %.2e "
                 "(tolerance %.0e, 2-norm over free vertices / weight); max strain %.3f %%; deepest body penetration "
-                "%.3f mm%s\ndrape-free: time %.2f s (assembly %.2f, factorisation %.2f, solve %.2f, line search %.2f)\n",
+                "%.3f mm%s\ndrape-free: time %.2f s (assembly %.2f, factorisation %.2f, solve %.2f, curved steps %.2f, line search %.2f)\n",
                 s.message.c_str(), s.steps, s.newton_iterations, s.projected_iterations, s.factorizations, s.residual, tolerance, 100 * s.max_strain,
                 1000 * s.max_penetration, self_contact_text(s, self_vertices).c_str(), s.seconds_total, s.seconds_assembly, s.seconds_factorization,
-                s.seconds_solve, s.seconds_line_search);
+                s.seconds_solve, s.seconds_curvature, s.seconds_line_search);
   return line;
 }
 
@@ -55,7 +55,7 @@ std::string json(const DrapeStats& s, double tolerance, const std::string& outpu
   if (!std::isnan(s.min_self_distance)) j.key("min_self_distance_m").value(s.min_self_distance);
   if (self_vertices >= 0) j.key("self_contact_vertices").value(self_vertices);
   j.key("time_s").begin_object().key("assembly").value(s.seconds_assembly).key("factorization").value(s.seconds_factorization);
-  j.key("solve").value(s.seconds_solve).key("line_search").value(s.seconds_line_search).key("total").value(s.seconds_total).end_object();
+  j.key("solve").value(s.seconds_solve).key("curved_steps").value(s.seconds_curvature).key("line_search").value(s.seconds_line_search).key("total").value(s.seconds_total).end_object();
   j.end_object();
   return j.str() + "\n";
 }

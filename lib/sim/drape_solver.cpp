@@ -4,12 +4,14 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <Eigen/Eigenvalues>
 
 #include "core/error.h"
 #include "sim/self_contact.h"
 #include "sim/bisected_cholesky.h"
+#include "sim/step_curvature.h"
 
 namespace foldsketch {
 namespace {
@@ -129,6 +131,10 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
 
   BisectedCholesky cholesky;
   SparseMatrix A = energy.pattern();
+  // Curved steps (DrapeSettings::curved_steps): static mode only, and not with self-contact,
+  // whose step bound holds for the straight step.
+  std::optional<StepCurvature> curvature;
+  if (settings.curved_steps && !dynamic && !model.self_contact && n > 0) curvature.emplace(model, energy.free_index(), n);
   VectorXd velocity = VectorXd::Zero(3 * n);
   double h = settings.time_step;
   double damping = 1.0 / (h * h);
@@ -248,18 +254,28 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         for (int a = 0; a < n; ++a) step.row(energy.free_vertices()[a]) = dx.segment<3>(3 * a).transpose();
         longest = self_contact_step_bound(*model.self_contact, x, step, 1.0 - kSelfContactClosing);
       }
+      VectorXd bend;  // the path's second-order part: x + alpha dx + alpha^2 bend
+      if (curvature) {
+        const auto t1 = Clock::now();
+        bend = (*curvature)(x, dx);
+        stats.seconds_curvature += since(t1);
+      }
       const auto t0 = Clock::now();
+      const auto along = [&](double a) {
+        MatrixX3d y = moved(x, dx, energy.free_vertices(), a);
+        return bend.size() > 0 ? moved(y, bend, energy.free_vertices(), a * a) : y;
+      };
       double alpha = longest;
-      MatrixX3d trial = moved(x, dx, energy.free_vertices(), alpha);
+      MatrixX3d trial = along(alpha);
       while (phi_only(trial) > phi + kArmijo * alpha * slope && alpha >= kMinStep) {
         alpha *= 0.5;
-        trial = moved(x, dx, energy.free_vertices(), alpha);
+        trial = along(alpha);
       }
       if (alpha < kMinStep) {  // in the roundoff regime, judge the full step by its forces
         const EnergyTerms& e = stats.energy;
         const double magnitude = std::abs(e.membrane) + std::abs(e.bending) + std::abs(e.gravity) + std::abs(e.stitches) +
                                  std::abs(e.contact) + std::abs(e.self_contact) + std::abs(phi);
-        MatrixX3d full = moved(x, dx, energy.free_vertices(), longest);
+        MatrixX3d full = along(longest);
         if (phi_only(full) <= phi + kRoundoff * magnitude) {
           VectorXd g_full;
           evaluate(full, &g_full, nullptr);
