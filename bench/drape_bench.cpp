@@ -150,7 +150,7 @@ int main(int argc, char** argv) {
   std::string material_name;
   double ease = 0.02;
   std::string trajectory_path;
-  bool trace = false, no_reference = false;
+  bool trace = false, no_reference = false, straight_steps = false;
   double time_step = DrapeSettings{}.time_step;
   std::string metric = "laplacian";
   std::vector<double> perturbations;
@@ -179,6 +179,9 @@ int main(int argc, char** argv) {
                  "what the damping of the static steps measures a step by (DrapeSettings::proximal_metric): laplacian "
                  "(the default), or mass (the quasi-static backward-Euler step), for the timed and the reference drapes")
       ->check(CLI::IsMember({"laplacian", "mass"}));
+  app.add_flag("--straight-steps", straight_steps,
+               "line searches along the straight Newton step, as before the curved steps (DrapeSettings::curved_steps), "
+               "for the timed and the reference drapes");
   CLI::Option* no_reference_flag = app.add_flag("--no-reference", no_reference,
                "skip the reference drapes (no error columns; a warm start then starts from the cold accurate drape): "
                "for sweeps over many sizes");
@@ -216,6 +219,7 @@ int main(int argc, char** argv) {
   std::sort(coarse_sizes.begin(), coarse_sizes.end());
   DrapeSettings defaults;  // what every drape here starts from
   defaults.proximal_metric = metric == "mass" ? ProximalMetric::Mass : ProximalMetric::Laplacian;
+  defaults.curved_steps = !straight_steps;
   const DrapeProgress tracer = [](const DrapeStats& s, const MatrixX3d&) {
     std::fprintf(stderr, "%5d factorisations %5d residual %.3e step %.3f length %.2e damping %.1e\n", s.newton_iterations,
                  s.factorizations, s.residual, s.step_fraction, s.step_length, s.damping);
