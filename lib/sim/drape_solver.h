@@ -129,11 +129,13 @@ struct DrapeSettings {
   double exact_contact_residual = 1e-4;
   // Static mode: the line search follows x + a dx + a^2 c, c the step's second-order part that
   // keeps regions turning as a whole from stretching (StepCurvature; one solve with the
-  // pattern's Laplacian per Newton iteration). Not with self-contact, whose step bound holds
-  // for straight steps. Measured on the 2 % re-drapes from the 12 stored starts (5K-54K,
-  // bench/drape_bench.txt): Newton iterations 1584 -> 1299, factorisations 1978 -> 1676, fewer
-  // from 10 of 12 starts, 54K 155 / 249 / 251 -> 113 / 162 / 179; ending at the same drapes
-  // (within 0.05 um mean at 5K and 10K; 0.05 and 0.23 mm mean at two 20K starts).
+  // pattern's Laplacian per Newton iteration). Measured on the 2 % re-drapes from the 12 stored
+  // starts (5K-54K, bench/drape_bench.txt): Newton iterations 1584 -> 1299, factorisations
+  // 1978 -> 1676, fewer from 10 of 12 starts, 54K 155 / 249 / 251 -> 113 / 162 / 179; ending at
+  // the same drapes (within 0.05 um mean at 5K and 10K; 0.05 and 0.23 mm mean at two 20K
+  // starts). Not with self-contact: on the pleat pressed flat (HardCases) curved steps took 929
+  // Newton iterations against 206 (768 with the straight step's layer bound; why was not
+  // analysed), and the step bound there holds for straight steps.
   bool curved_steps = true;
 };
 
