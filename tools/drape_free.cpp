@@ -89,6 +89,9 @@ int main(int argc, char** argv) {
   std::string bending_hessian;
   app.add_option("--bending-hessian", bending_hessian, "accurate preset's hinge Hessian (for measurements)")
       ->check(CLI::IsMember({"projected", "gauss-newton", "exact"}));
+  bool straight_steps = false;
+  app.add_flag("--straight-steps", straight_steps,
+               "line-search along the straight Newton step instead of the curved one (for measurements)");
   std::string membrane_hessian;
   app.add_option("--membrane-hessian", membrane_hessian, "accurate preset's triangle Hessian (for measurements)")
       ->check(CLI::IsMember({"projected", "gauss-newton", "exact"}));
@@ -121,6 +124,7 @@ int main(int argc, char** argv) {
     if (!bending_hessian.empty())
       settings.bending_hessian = hessian_kind(bending_hessian);
     if (!membrane_hessian.empty()) settings.membrane_hessian = hessian_kind(membrane_hessian);
+    if (straight_steps) settings.curved_steps = false;
     const bool terminal = ::isatty(STDERR_FILENO);
     const DrapeResult result = solve_drape(model, garment.V, settings, [&](const DrapeStats& s, const MatrixX3d&) {
       if (trace)
