@@ -412,6 +412,22 @@ void ClothEnergy::add_laplacian(SparseMatrix& A, double mu) const {
   }
 }
 
+SparseMatrix ClothEnergy::scalar_laplacian() const {
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(9 * laplacians_.size());
+  for (size_t t = 0; t < laplacians_.size(); ++t) {
+    const auto& v = model_.triangles[t];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const int a = free_index_[v[i]], b = free_index_[v[j]];
+        if (a >= 0 && b >= 0) entries.emplace_back(a, b, laplacians_[t](i, j));
+      }
+  }
+  SparseMatrix L(free_count(), free_count());
+  L.setFromTriplets(entries.begin(), entries.end());
+  return L;
+}
+
 VectorXd ClothEnergy::laplacian_times(const VectorXd& d) const {
   VectorXd y = VectorXd::Zero(d.size());
   for (size_t t = 0; t < laplacians_.size(); ++t) {

@@ -62,6 +62,8 @@ public:
   // add mu * L to a matrix with this pattern, or give L d for free-DOF displacements d.
   void add_laplacian(SparseMatrix& A, double mu) const;
   VectorXd laplacian_times(const VectorXd& d) const;
+  // The same L over the free vertices, one unknown per vertex (free_count square).
+  SparseMatrix scalar_laplacian() const;
 
 private:
   struct Block {   // where an element's (a, b) 3x3 block lives in the value array

@@ -134,7 +134,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   // Curved steps (DrapeSettings::curved_steps): static mode only, and not with self-contact,
   // whose step bound holds for the straight step.
   std::optional<StepCurvature> curvature;
-  if (settings.curved_steps && !dynamic && !model.self_contact && n > 0) curvature.emplace(model, energy.free_index(), n);
+  if (settings.curved_steps && !dynamic && !model.self_contact && n > 0) curvature.emplace(model, energy);
   VectorXd velocity = VectorXd::Zero(3 * n);
   double h = settings.time_step;
   double damping = 1.0 / (h * h);
@@ -263,7 +263,8 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
       const auto t0 = Clock::now();
       const auto along = [&](double a) {
         MatrixX3d y = moved(x, dx, energy.free_vertices(), a);
-        return bend.size() > 0 ? moved(y, bend, energy.free_vertices(), a * a) : y;
+        if (bend.size() > 0) y = moved(y, bend, energy.free_vertices(), a * a);
+        return y;
       };
       double alpha = longest;
       MatrixX3d trial = along(alpha);

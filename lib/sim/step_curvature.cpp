@@ -16,54 +16,39 @@ constexpr double kCollapsed = 1e-12;
 
 } // namespace
 
-StepCurvature::StepCurvature(const ClothModel& model, const std::vector<int>& free_index, int free_count)
-    : model_(model), free_index_(free_index), free_count_(free_count) {
+StepCurvature::StepCurvature(const ClothModel& model, const ClothEnergy& energy) : model_(model), energy_(energy) {
   gradients_.reserve(model.triangles.size());
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(9 * model.triangles.size() + static_cast<size_t>(free_count));
-  for (size_t t = 0; t < model.triangles.size(); ++t) {
-    gradients_.push_back(shape_gradients(model.rest[t]));
-    const Eigen::Matrix3d L = model.rest[t].area * gradients_.back().transpose() * gradients_.back();
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        const int a = free_index[model.triangles[t][i]], b = free_index[model.triangles[t][j]];
-        if (a >= 0 && b >= 0) entries.emplace_back(a, b, L(i, j));
-      }
-  }
-  for (int a = 0; a < free_count; ++a) entries.emplace_back(a, a, kRegularisation);
-  Eigen::SparseMatrix<double> laplacian(free_count, free_count);
-  laplacian.setFromTriplets(entries.begin(), entries.end());
+  for (const MembraneRest& rest : model.rest) gradients_.push_back(shape_gradients(rest));
+  SparseMatrix laplacian = energy.scalar_laplacian();
+  for (int a = 0; a < energy.free_count(); ++a) laplacian.coeffRef(a, a) += kRegularisation;
   laplacian_.compute(laplacian);
   if (laplacian_.info() != Eigen::Success) throw ArgumentError("StepCurvature: the pattern's Laplacian did not factorise");
 }
 
 VectorXd StepCurvature::operator()(const MatrixX3d& x, const VectorXd& dx) const {
   using Matrix32 = Eigen::Matrix<double, 3, 2>;
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(free_count_, 3);
+  const std::vector<int>& free_index = energy_.free_index();
+  const int n = energy_.free_count();
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, 3);
   for (size_t t = 0; t < model_.triangles.size(); ++t) {
     const auto& v = model_.triangles[t];
     const Eigen::Matrix<double, 2, 3>& b = gradients_[t];
     Matrix32 F = Matrix32::Zero(), dF = Matrix32::Zero();
-    int moving = 0;
     for (int i = 0; i < 3; ++i) {
       F += x.row(v[i]).transpose() * b.col(i).transpose();
-      if (const int a = free_index_[v[i]]; a >= 0) {
-        dF += dx.segment<3>(3 * a) * b.col(i).transpose();
-        ++moving;
-      }
+      if (const int a = free_index[v[i]]; a >= 0) dF += dx.segment<3>(3 * a) * b.col(i).transpose();
     }
-    if (moving == 0) continue;
     const Eigen::Matrix2d FtF = F.transpose() * F;
     const double trace = FtF.trace();
     if (!(FtF.determinant() > kCollapsed * trace * trace)) continue;
     const Matrix32 G = -0.5 * F * FtF.inverse() * (dF.transpose() * dF);
     for (int i = 0; i < 3; ++i)
-      if (const int a = free_index_[v[i]]; a >= 0) rhs.row(a) += model_.rest[t].area * (G * b.col(i)).transpose();
+      if (const int a = free_index[v[i]]; a >= 0) rhs.row(a) += model_.rest[t].area * (G * b.col(i)).transpose();
   }
   const Eigen::MatrixXd c = laplacian_.solve(rhs);
-  VectorXd out = VectorXd::Zero(3 * free_count_);
+  VectorXd out = VectorXd::Zero(3 * n);
   if (!c.allFinite()) return out;
-  for (int a = 0; a < free_count_; ++a) out.segment<3>(3 * a) = c.row(a).transpose();
+  for (int a = 0; a < n; ++a) out.segment<3>(3 * a) = c.row(a).transpose();
   return out;
 }
 

@@ -22,14 +22,15 @@
 
 #include <Eigen/SparseCholesky>
 
-#include "sim/cloth_model.h"
+#include "sim/cloth_energy.h"
 
 namespace foldsketch {
 
 class StepCurvature {
 public:
-  // free_index[v]: v's position among the free vertices, -1 when pinned (ClothEnergy::free_index).
-  StepCurvature(const ClothModel& model, const std::vector<int>& free_index, int free_count);
+  // Factorises energy's pattern Laplacian (ClothEnergy::scalar_laplacian); both arguments must
+  // outlive this object.
+  StepCurvature(const ClothModel& model, const ClothEnergy& energy);
   // c for the Newton step dx (3 per free vertex, [m]) from drape x (#V by 3): what x + a dx +
   // a^2 c adds to the straight step. Pinned vertices do not move; triangles collapsed in the
   // drape contribute no target; a non-finite solve gives c = 0.
@@ -37,8 +38,7 @@ public:
 
 private:
   const ClothModel& model_;
-  const std::vector<int>& free_index_;
-  int free_count_ = 0;
+  const ClothEnergy& energy_;
   std::vector<Eigen::Matrix<double, 2, 3>> gradients_;  // per triangle: shape-function gradients over the pattern
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> laplacian_;
 };
