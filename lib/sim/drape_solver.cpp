@@ -39,9 +39,15 @@ constexpr double kStepAcceptance = 1e-3;
 // fewer, riskier steps).
 constexpr double kSelfContactClosing = 0.9;
 
-MatrixX3d moved(const MatrixX3d& x, const VectorXd& dx, const std::vector<int>& free_vertices, double alpha) {
+// x + alpha dx + alpha^2 bend over the free vertices (no bend when it is empty).
+MatrixX3d moved(const MatrixX3d& x, const VectorXd& dx, const VectorXd& bend, const std::vector<int>& free_vertices,
+                double alpha) {
   MatrixX3d y = x;
-  for (size_t a = 0; a < free_vertices.size(); ++a) y.row(free_vertices[a]) += alpha * dx.segment<3>(3 * static_cast<long>(a)).transpose();
+  for (size_t a = 0; a < free_vertices.size(); ++a) {
+    const long i = 3 * static_cast<long>(a);
+    y.row(free_vertices[a]) += alpha * dx.segment<3>(i).transpose();
+    if (bend.size() > 0) y.row(free_vertices[a]) += alpha * alpha * bend.segment<3>(i).transpose();
+  }
   return y;
 }
 
@@ -261,11 +267,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         stats.seconds_curvature += since(t1);
       }
       const auto t0 = Clock::now();
-      const auto along = [&](double a) {
-        MatrixX3d y = moved(x, dx, energy.free_vertices(), a);
-        if (bend.size() > 0) y = moved(y, bend, energy.free_vertices(), a * a);
-        return y;
-      };
+      const auto along = [&](double a) { return moved(x, dx, bend, energy.free_vertices(), a); };
       double alpha = longest;
       MatrixX3d trial = along(alpha);
       while (phi_only(trial) > phi + kArmijo * alpha * slope && alpha >= kMinStep) {

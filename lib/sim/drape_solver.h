@@ -134,8 +134,8 @@ struct DrapeSettings {
   // 1978 -> 1676, fewer from 10 of 12 starts, 54K 155 / 249 / 251 -> 113 / 162 / 179; ending at
   // the same drapes (within 0.05 um mean at 5K and 10K; 0.05 and 0.23 mm mean at two 20K
   // starts). Not with self-contact: on the pleat pressed flat (HardCases) curved steps took 929
-  // Newton iterations against 206 (768 with the straight step's layer bound; why was not
-  // analysed), and the step bound there holds for straight steps.
+  // Newton iterations against 206 (768 with the straight step's layer bound; traced, the cause
+  // not found: bench/drape_bench.txt), and the step bound there holds for straight steps.
   bool curved_steps = true;
 };
 
