@@ -4,6 +4,7 @@
 #include <unordered_map>
 
 #include "mesh/boundary_loops.h"
+#include "mesh/mesh_edges.h"
 
 namespace foldsketch {
 
@@ -21,11 +22,6 @@ struct HalfEdge {
   bool operator==(const HalfEdge&) const = default;
 };
 
-std::uint64_t edge_key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
-}
-
 int wrap(int i, int n) { return ((i % n) + n) % n; }
 } // namespace
 
@@ -40,7 +36,7 @@ std::vector<Seam> seams(const Garment& g, const std::vector<BoundaryLoop>& loops
   for (int l = 0; l < static_cast<int>(loops.size()); ++l)
     for (int i = 0; i < static_cast<int>(loops[l].vertices.size()); ++i) {
       const HalfEdge h{l, i};
-      by_drape_edge[edge_key(drape(vertex(h, 0)), drape(vertex(h, 1)))].push_back(h);
+      by_drape_edge[undirected_edge_key(drape(vertex(h, 0)), drape(vertex(h, 1)))].push_back(h);
     }
   // partner[l][i]: the other boundary half-edge on the same drape edge, if exactly one.
   std::vector<std::vector<HalfEdge>> partner(loops.size());
@@ -48,7 +44,7 @@ std::vector<Seam> seams(const Garment& g, const std::vector<BoundaryLoop>& loops
     partner[l].resize(loops[l].vertices.size());
     for (int i = 0; i < static_cast<int>(loops[l].vertices.size()); ++i) {
       const HalfEdge h{l, i};
-      const auto& list = by_drape_edge[edge_key(drape(vertex(h, 0)), drape(vertex(h, 1)))];
+      const auto& list = by_drape_edge[undirected_edge_key(drape(vertex(h, 0)), drape(vertex(h, 1)))];
       if (list.size() == 2) partner[l][i] = list[0] == h ? list[1] : list[0];
     }
   }

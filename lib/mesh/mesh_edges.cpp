@@ -21,7 +21,7 @@ MeshEdges mesh_edges(const MatrixX3i& F, int num_vertices) {
     for (int k = 0; k < 3; ++k) {
       int a = F(f, k), b = F(f, (k + 1) % 3);
       if (a > b) std::swap(a, b);
-      const std::uint64_t key = (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
+      const std::uint64_t key = undirected_edge_key(a, b);
       auto [it, inserted] = index.try_emplace(key, static_cast<int>(edges.size()));
       if (inserted) {
         edges.push_back({a, b});

@@ -1,6 +1,8 @@
 // Undirected edges of a triangle mesh with their incident faces.
 #pragma once
 
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "core/types.h"
@@ -17,5 +19,11 @@ struct MeshEdges {
 // Edges of the triangles F (#F by 3, indices in [0, num_vertices)), numbered in order of
 // first appearance when walking faces and their corners.
 MeshEdges mesh_edges(const MatrixX3i& F, int num_vertices);
+
+// One 64-bit key for the undirected edge between vertices a and b (either order), for hashing.
+inline std::uint64_t undirected_edge_key(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
+}
 
 } // namespace foldsketch
