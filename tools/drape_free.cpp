@@ -10,6 +10,7 @@
 #include "formats/garment_io.h"
 #include "formats/json_writer.h"
 #include "formats/scene_xml.h"
+#include "sim/coarse_to_fine.h"
 #include "sim/drape_solver.h"
 
 namespace foldsketch {
@@ -42,7 +43,23 @@ std::string human(const DrapeStats& s, double tolerance, int self_vertices) {
   return line;
 }
 
-std::string json(const DrapeStats& s, double tolerance, const std::string& output, bool written, int self_vertices) {
+// One line per level of a coarse-to-fine drape (none for a plain drape).
+std::string levels_text(const std::vector<DrapeLevel>& levels) {
+  std::string out;
+  for (size_t k = 0; k < levels.size(); ++k) {
+    const DrapeStats& s = levels[k].stats;
+    char line[300];
+    std::snprintf(line, sizeof line, "drape-free: level %zu of %zu, %d triangles: %s: %d Newton iterations, %d factorisations, %.2f s\n",
+                  k + 1, levels.size(), levels[k].triangles, s.message.c_str(), s.newton_iterations, s.factorizations, s.seconds_total);
+    out += line;
+  }
+  return out;
+}
+
+// levels: the levels of a coarse-to-fine drape (empty for a plain drape); s is the last
+// level's, but for the total time.
+std::string json(const DrapeStats& s, double tolerance, const std::string& output, bool written, int self_vertices,
+                 const std::vector<DrapeLevel>& levels) {
   JsonWriter j;
   j.begin_object().key("converged").value(s.converged).key("message").value(s.message);
   j.key("output").value(written ? output : "").key("steps").value(s.steps).key("newton_iterations").value(s.newton_iterations);
@@ -56,6 +73,14 @@ std::string json(const DrapeStats& s, double tolerance, const std::string& outpu
   if (self_vertices >= 0) j.key("self_contact_vertices").value(self_vertices);
   j.key("time_s").begin_object().key("assembly").value(s.seconds_assembly).key("factorization").value(s.seconds_factorization);
   j.key("solve").value(s.seconds_solve).key("curved_steps").value(s.seconds_curvature).key("line_search").value(s.seconds_line_search).key("total").value(s.seconds_total).end_object();
+  if (!levels.empty()) {
+    j.key("levels").begin_array();
+    for (const DrapeLevel& l : levels)
+      j.begin_object().key("triangles").value(l.triangles).key("converged").value(l.stats.converged).key("newton_iterations")
+          .value(l.stats.newton_iterations).key("factorizations").value(l.stats.factorizations).key("residual").value(l.stats.residual)
+          .key("time_s").value(l.stats.seconds_total).end_object();
+    j.end_array();
+  }
   j.end_object();
   return j.str() + "\n";
 }
@@ -96,6 +121,22 @@ int main(int argc, char** argv) {
   app.add_option("--membrane-hessian", membrane_hessian, "accurate preset's triangle Hessian (for measurements)")
       ->check(CLI::IsMember({"projected", "gauss-newton", "exact"}));
   app.add_flag("--write-unconverged", write_unconverged, "write the drape even when it did not converge");
+  bool coarse_to_fine = false;
+  std::vector<int> coarse_levels_asked;
+  CLI::Option* levels_option =
+      app.add_option("--coarse-levels", coarse_levels_asked,
+                     "drape coarse to fine through the patterns remeshed at these triangle counts (comma-separated, "
+                     "coarsest first), then the garment's own mesh from the last of them")
+          ->allow_extra_args(false)  // one comma-separated list, so the scene after it stays positional
+          ->delimiter(',')
+          ->check(CLI::PositiveNumber);
+  app.add_flag("--coarse-to-fine", coarse_to_fine,
+               "for a cold drape (from a placement): drape the patterns remeshed coarser first (a quarter of the "
+               "triangles per level, none under 2000), each level from the one before, the garment's own mesh last. "
+               "Measured on the benchmark skirt (bench/drape_bench.txt): 1.2-2.3 times faster at 20K and 54K "
+               "triangles; at 10K from 1.5 times faster to 2 times slower, depending on the mesh. Not for re-drapes: "
+               "the coarse levels lose the start's folds. Not with self-contact or explicit stitches")
+      ->excludes(levels_option);
   return run_tool(app, argc, argv, [&] {
     const Scene scene = read_scene_xml(scene_path);
     if (patterns_path.empty()) patterns_path = scene_relative(scene_path, scene.garment_file);
@@ -126,14 +167,31 @@ int main(int argc, char** argv) {
     if (!membrane_hessian.empty()) settings.membrane_hessian = hessian_kind(membrane_hessian);
     if (straight_steps) settings.curved_steps = false;
     const bool terminal = ::isatty(STDERR_FILENO);
-    const DrapeResult result = solve_drape(model, garment.V, settings, [&](const DrapeStats& s, const MatrixX3d&) {
+    const DrapeProgress progress = [&](const DrapeStats& s, const MatrixX3d& x) {
       if (trace)
         std::fprintf(stderr, "iteration %d residual %.3e energy %.6e step %.3g move %.3g mm damping %.3g factorisations %d time %.2f s\n",
                      s.newton_iterations, s.residual, s.energy.total(), s.step_fraction, 1000 * s.step_length, s.damping,
                      s.factorizations, s.seconds_total);
       else if (terminal)
-        std::fprintf(stderr, "\rdrape-free: iteration %d, residual %.2e, %.1f s   ", s.newton_iterations, s.residual, s.seconds_total);
-    });
+        std::fprintf(stderr, "\rdrape-free: %ld vertices, iteration %d, residual %.2e, %.1f s   ", static_cast<long>(x.rows()),
+                     s.newton_iterations, s.residual, s.seconds_total);
+    };
+    std::vector<DrapeLevel> levels;
+    DrapeResult result;
+    if (coarse_to_fine) coarse_levels_asked = coarse_levels(static_cast<int>(model.triangles.size()));
+    if (!coarse_levels_asked.empty()) {
+      CoarseToFineResult c2f;
+      try {
+        c2f = solve_drape_coarse_to_fine(garment, scene, body ? &*body : nullptr, model, garment.V, settings, coarse_levels_asked, progress);
+      } catch (const ArgumentError& e) {
+        throw InputError(scene_path, 0, e.what());
+      }
+      result = std::move(c2f.drape);
+      levels = std::move(c2f.levels);
+      result.stats.seconds_total = c2f.seconds_total;  // every level's time
+    } else {
+      result = solve_drape(model, garment.V, settings, progress);
+    }
     if (terminal && !trace) std::fprintf(stderr, "\n");
     const double effective_tolerance = stopping_tolerance(settings);
     const bool write = result.stats.converged || write_unconverged;
@@ -142,8 +200,8 @@ int main(int argc, char** argv) {
       write_garment(garment, output);
     }
     const int self_vertices = model.self_contact ? static_cast<int>(model.self_contact->vertices.size()) : -1;
-    std::cout << (as_json ? json(result.stats, effective_tolerance, output, write, self_vertices)
-                          : human(result.stats, effective_tolerance, self_vertices));
+    std::cout << (as_json ? json(result.stats, effective_tolerance, output, write, self_vertices, levels)
+                          : levels_text(levels) + human(result.stats, effective_tolerance, self_vertices));
     if (!result.stats.converged)
       throw std::runtime_error(std::string("did not converge (") + result.stats.message + ")" +
                                (write ? "; wrote the unconverged drape as asked" : "; nothing written") +

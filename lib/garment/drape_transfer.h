@@ -5,8 +5,8 @@
 // one pattern point per panel; it takes their mean.
 //
 // For a drape that must follow its patterns onto a new mesh (pattern extension remeshes the
-// extended panels, DESIGN 4.5), and for starting a fine drape from a coarse one (drape_bench
-// --coarse, which measured that this does not shorten the fine drape: bench/drape_bench.txt).
+// extended panels, DESIGN 4.5), and between the levels of a coarse-to-fine drape
+// (sim/coarse_to_fine.h).
 #pragma once
 
 #include "garment/garment.h"

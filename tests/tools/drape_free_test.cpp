@@ -111,5 +111,34 @@ TEST(DrapeFree, SelfContactIsASceneSwitch) {
   EXPECT_FALSE(std::filesystem::exists(folder + "/bad.obj"));
 }
 
+TEST(DrapeFree, DrapesCoarseToFineAndReportsEveryLevel) {
+  const std::string folder = make_sample_folder("flag", 1200);
+  const std::string out = folder + "/draped.obj";
+  const auto r = test::run(test::tool_path("drape-free") + " --json --coarse-levels 300 " + folder + "/scene.xml -o " + out);
+  ASSERT_EQ(r.status, 0) << r.err << r.out;
+  const auto check = test::run("/usr/bin/python3 -c \"import json,sys; d=json.loads(sys.argv[1]); l=d['levels']; "
+                               "assert d['converged'] and d['residual'] <= 1e-6 and len(l) == 2, d; "
+                               "assert 200 < l[0]['triangles'] < 400 and l[0]['converged'] and l[1]['residual'] == d['residual'], l; "
+                               "assert d['time_s']['total'] >= l[0]['time_s'] + l[1]['time_s'], d\" '" + r.out + "'");
+  EXPECT_EQ(check.status, 0) << check.err;
+  const Garment before = read_garment(folder + "/garment.obj"), after = read_garment(out);
+  EXPECT_EQ(after.P, before.P);  // the garment's own mesh, not a coarse one
+  EXPECT_EQ(after.F, before.F);
+  const Scene scene = read_scene_xml(folder + "/scene.xml");
+  for (int v : pinned_vertices(scene, before.V)) EXPECT_EQ(after.V.row(v), before.V.row(v)) << "pin " << v << " moved";
+
+  // Coarse levels cannot carry self-contact: a clear error, nothing written.
+  std::string self = test::read_text(folder + "/scene.xml");
+  const size_t at = self.find("self-contact=\"false\"");
+  ASSERT_NE(at, std::string::npos) << self;
+  self.replace(at, std::string("self-contact=\"false\"").size(), "self-contact=\"true\"");
+  test::write_text(folder + "/self.xml", self);
+  const auto b = test::run(test::tool_path("drape-free") + " --coarse-levels 300 " + folder + "/self.xml -o " + folder + "/self.obj");
+  EXPECT_EQ(b.status, 1);
+  EXPECT_NE(b.err.find(folder + "/self.xml"), std::string::npos) << b.err;
+  EXPECT_NE(b.err.find("self-contact"), std::string::npos) << b.err;
+  EXPECT_FALSE(std::filesystem::exists(folder + "/self.obj"));
+}
+
 } // namespace
 } // namespace foldsketch
