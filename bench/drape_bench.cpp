@@ -28,8 +28,8 @@
 #include <CLI/CLI.hpp>
 
 #include "formats/body_mesh.h"
-#include "garment/drape_transfer.h"
 #include "samples/sample_scenes.h"
+#include "sim/coarse_to_fine.h"
 #include "sim/drape_solver.h"
 #include "stored_start.h"
 
@@ -158,6 +158,8 @@ int main(int argc, char** argv) {
   int start_count = 3;
   std::string mesh = "grid";
   std::vector<int> coarse_sizes;
+  bool coarse_auto = false;
+  std::string c2f_csv_path;
   app.add_option("--sizes", sizes, "target triangle counts")->delimiter(',');
   app.add_option("--runs", runs, "runs per preset (the median is reported)")->check(CLI::PositiveNumber);
   app.add_option("--body", body_path, "body mesh");
@@ -206,13 +208,17 @@ int main(int argc, char** argv) {
                  "write --start-count cold equilibria per size to this folder (tolerance 1e-9, from the sewn placement "
                  "moved by up to 1 um, seeds 1, 2, ...: each ends in its own fold arrangement), then stop");
   app.add_option("--start-count", start_count, "how many starts --write-starts writes per size")->check(CLI::PositiveNumber);
-  app.add_option("--coarse", coarse_sizes,
-                 "cold rows: also drape coarse-to-fine, through skirts of these triangle counts (those below the size, "
-                 "coarsest first): each level drapes (accurate preset) from the one before, carried over by "
-                 "transfer_drape; the row is the finest level's, its time that of all levels, the median over --runs "
-                 "paths (run r starts the coarsest level moved by up to 1 um, seed r)")
-      ->delimiter(',')
-      ->check(CLI::PositiveNumber);
+  CLI::Option* coarse_option =
+      app.add_option("--coarse", coarse_sizes,
+                     "cold rows: also drape coarse to fine (drape-free --coarse-levels), through the patterns remeshed at "
+                     "these triangle counts (those below the size): each level drapes (accurate preset) from the one "
+                     "before; the row is the garment's own level, its time that of all levels, the median over --runs "
+                     "paths (run r starts from the placement moved by up to 1 um, seed r)")
+          ->delimiter(',')
+          ->check(CLI::PositiveNumber);
+  app.add_flag("--coarse-to-fine", coarse_auto, "as --coarse, with the levels drape-free --coarse-to-fine picks (coarse_levels)")
+      ->excludes(coarse_option);
+  app.add_option("--c2f-csv", c2f_csv_path, "CSV to write of the coarse-to-fine rows (bench/drape_bench_c2f.csv)");
   app.add_flag("--trace", trace,
                "print every Newton iteration of the timed solves on stderr (factorisations so far, residual, step, damping)");
   CLI11_PARSE(app, argc, argv);
@@ -362,48 +368,42 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
     }
   };
-  // Cold drapes coarse-to-fine: through skirts of --coarse sizes, each level draped (accurate
-  // preset) from the level before, carried over by transfer_drape; the row is the finest
-  // level's, its time that of all levels' drapes (the coarse skirts and their models are built
-  // once, before the runs, as the finest level's are). Run r starts the coarsest level moved by
-  // up to 1 um (seed r + 1): the cold drape is chaotic, so each run takes its own path, and the
-  // median is over paths (no error column: another path ends in another fold arrangement).
-  const auto coarse_to_fine = [&](const SampleParams& params, const ClothModel& model, const SampleScene& sample) {
-    std::vector<SampleScene> coarse;
-    std::vector<ClothModel> coarse_models;
-    for (int level : coarse_sizes) {
-      if (level >= params.triangles) break;
-      SampleParams level_params = params;
-      level_params.triangles = level;
-      SampleScene& s = coarse.emplace_back(make_sample("skirt", level_params, &body.V));
-      s.scene = sample.scene;
-      coarse_models.push_back(cloth_model(s.garment, s.scene, &body, pinned_vertices(s.scene, s.garment.V)));
-    }
+  // Cold drapes coarse to fine (solve_drape_coarse_to_fine, as drape-free --coarse-to-fine):
+  // through the skirt's patterns remeshed at the --coarse triangle counts (or coarse_levels'),
+  // each level draped from the one before; the row is the garment's own level, its time that
+  // of all levels with the remeshing. Run r starts from the sewn placement moved by up to 1 um
+  // (seed r + 1): the cold drape is chaotic, so each run takes its own path, and the median is
+  // over paths (no error column: another path ends in another fold arrangement).
+  std::ofstream c2f_csv;
+  if (!c2f_csv_path.empty()) (c2f_csv.open(c2f_csv_path), c2f_csv << header);
+  const auto coarse_to_fine = [&](const ClothModel& model, const SampleScene& sample) {
+    std::vector<int> levels;
+    for (int level : coarse_sizes)
+      if (level < static_cast<int>(model.triangles.size())) levels.push_back(level);
+    if (coarse_auto) levels = coarse_levels(static_cast<int>(model.triangles.size()));
     std::vector<double> seconds;
     std::vector<Summary> finest;
-    std::string levels;
+    std::string text;
     for (int r = 0; r < runs; ++r) {
-      levels += (r ? "\n          run " : "run ") + std::to_string(r + 1) + ":";
-      const auto t0 = std::chrono::steady_clock::now();
-      DrapeResult drape;
-      for (size_t level = 0; level <= coarse.size(); ++level) {
-        const Garment& garment = level < coarse.size() ? coarse[level].garment : sample.garment;
-        const ClothModel& m = level < coarse.size() ? coarse_models[level] : model;
-        const MatrixX3d start = level > 0 ? transfer_drape(coarse[level - 1].garment, drape.V, garment)
-                                          : perturbed(garment.V, 1e-6, static_cast<unsigned>(r + 1));
-        drape = solve_drape(m, start, timed_settings(SolverPreset::Accurate), trace ? tracer : DrapeProgress{});
-        char text[120];
-        std::snprintf(text, sizeof text, "%s %zu: %d it. %.2f s", level ? "," : "", m.triangles.size(),
-                      drape.stats.newton_iterations, drape.stats.seconds_total);
-        levels += text;
+      text += (r ? "\n          run " : "run ") + std::to_string(r + 1) + ":";
+      const CoarseToFineResult c2f =
+          solve_drape_coarse_to_fine(sample.garment, sample.scene, &body, model, perturbed(sample.garment.V, 1e-6, static_cast<unsigned>(r + 1)),
+                                     timed_settings(SolverPreset::Accurate), levels, trace ? tracer : DrapeProgress{});
+      for (size_t level = 0; level < c2f.levels.size(); ++level) {
+        const DrapeStats& d = c2f.levels[level].stats;
+        char line[160];
+        std::snprintf(line, sizeof line, "%s %d: %d it. / %d fact. %.2f s", level ? "," : "", c2f.levels[level].triangles,
+                      d.newton_iterations, d.factorizations, d.seconds_total);
+        text += line;
       }
-      seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-      finest.push_back(summary(drape.stats, seconds.back(), std::nullopt));
+      seconds.push_back(c2f.seconds_total);
+      finest.push_back(summary(c2f.drape.stats, seconds.back(), std::nullopt));
     }
     Summary row = median_summary(finest);
     row.seconds = median(seconds);
     print_row(static_cast<long>(model.triangles.size()), "c2f", row);
-    std::printf("%9s levels: %s\n", "", levels.c_str());
+    std::printf("%9s levels: %s\n", "", text.c_str());
+    record("cold", static_cast<long>(model.triangles.size()), "c2f", row, c2f_csv);
   };
   DrapeSettings reference_settings = defaults;
   reference_settings.tolerance = 1e-9;
@@ -467,7 +467,7 @@ int main(int argc, char** argv) {
       for (const auto& [preset, row] : timed.presets) record("cold", triangles, preset, row, csv);
       if (!reference) previous = timed.drape;
       if (reference) perturb_start(model, sample.garment.V, *reference);
-      if (!coarse_sizes.empty()) coarse_to_fine(params, model, sample);
+      if (!coarse_sizes.empty() || coarse_auto) coarse_to_fine(model, sample);
     }
     if (warm) {
       char title[240];
@@ -509,9 +509,11 @@ int main(int argc, char** argv) {
   }
 
   // Cost growth over the sizes, per start and preset (converged rows only).
+  std::vector<std::string> with_c2f = presets;
+  with_c2f.push_back("c2f");
   bool first = true;
   for (const char* start : {"cold", "warm"})
-    for (const std::string& preset : presets) {
+    for (const std::string& preset : with_c2f) {
       std::vector<double> n, seconds, iterations, per_iteration;
       for (const Row& r : rows)
         if (r.start == start && r.preset == preset)
