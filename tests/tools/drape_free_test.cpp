@@ -19,13 +19,25 @@ std::string make_sample_folder(const std::string& name, int triangles) {
   return folder;
 }
 
-TEST(DrapeFree, ConvergesWithExactPinsAndReportsInJson) {
-  const std::string folder = make_sample_folder("flag", 600);
+// The sample's scene with one attribute switched (e.g. friction="false" to "true"), written as
+// folder/name; returns its path.
+std::string switched_scene(const std::string& folder, const std::string& from, const std::string& to, const std::string& name) {
+  std::string scene = test::read_text(folder + "/scene.xml");
+  const size_t at = scene.find(from);
+  EXPECT_NE(at, std::string::npos) << scene;
+  if (at != std::string::npos) scene.replace(at, from.size(), to);
+  test::write_text(folder + "/" + name, scene);
+  return folder + "/" + name;
+}
+
+// drape-free --json ARGS on folder's scene, writing folder/draped.obj; expects success, the
+// Python `assertions` to hold of its report d, and the drape written on the sample's own mesh
+// (patterns unchanged) with every pin exactly where it was and the rest draped.
+void expect_drape(const std::string& folder, const std::string& args, const std::string& assertions) {
   const std::string out = folder + "/draped.obj";
-  const auto r = test::run(test::tool_path("drape-free") + " --json " + folder + "/scene.xml -o " + out);
+  const auto r = test::run(test::tool_path("drape-free") + " --json " + args + " " + folder + "/scene.xml -o " + out);
   ASSERT_EQ(r.status, 0) << r.err << r.out;
-  const auto check = test::run("/usr/bin/python3 -c \"import json,sys; d=json.loads(sys.argv[1]); "
-                               "assert d['converged'] and d['residual'] <= 1e-6 and d['factorizations'] > 0 and 'min_self_distance_m' not in d, d\" '" + r.out + "'");
+  const auto check = test::run("/usr/bin/python3 -c \"import json,sys; d=json.loads(sys.argv[1]); " + assertions + "\" '" + r.out + "'");
   EXPECT_EQ(check.status, 0) << check.err;
   const Garment before = read_garment(folder + "/garment.obj"), after = read_garment(out);
   EXPECT_EQ(after.P, before.P);  // the patterns travel unchanged
@@ -35,6 +47,11 @@ TEST(DrapeFree, ConvergesWithExactPinsAndReportsInJson) {
   ASSERT_FALSE(pinned.empty());
   for (int v : pinned) EXPECT_EQ(after.V.row(v), before.V.row(v)) << "pin " << v << " moved";
   EXPECT_GT((after.V - before.V).norm(), 0.01);  // and the rest did drape
+}
+
+TEST(DrapeFree, ConvergesWithExactPinsAndReportsInJson) {
+  expect_drape(make_sample_folder("flag", 600), "",
+               "assert d['converged'] and d['residual'] <= 1e-6 and d['factorizations'] > 0 and 'min_self_distance_m' not in d, d");
 }
 
 TEST(DrapeFree, UnconvergedDrapeIsNotWrittenUnlessAsked) {
@@ -59,12 +76,8 @@ TEST(DrapeFree, BadInputIsLocatedAndWritesNothing) {
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err.rfind("drape-free: " + folder + "/bad.xml:3: unknown material preset 'tweed'", 0), 0u) << r.err;
   EXPECT_FALSE(std::filesystem::exists(folder + "/out.obj"));
-  std::string with_friction = test::read_text(folder + "/scene.xml");
-  const size_t at = with_friction.find("friction=\"false\"");
-  ASSERT_NE(at, std::string::npos) << with_friction;
-  with_friction.replace(at, std::string("friction=\"false\"").size(), "friction=\"true\"");
-  test::write_text(folder + "/friction.xml", with_friction);
-  const auto refused = test::run(test::tool_path("drape-free") + " " + folder + "/friction.xml -o " + folder + "/out.obj");
+  const std::string friction = switched_scene(folder, "friction=\"false\"", "friction=\"true\"", "friction.xml");
+  const auto refused = test::run(test::tool_path("drape-free") + " " + friction + " -o " + folder + "/out.obj");
   EXPECT_EQ(refused.status, 1);
   EXPECT_NE(refused.err.find("friction, which the engine does not model yet"), std::string::npos) << refused.err;
   EXPECT_FALSE(std::filesystem::exists(folder + "/out.obj"));
@@ -74,11 +87,7 @@ TEST(DrapeFree, BadInputIsLocatedAndWritesNothing) {
 // report names the term.
 TEST(DrapeFree, SelfContactIsASceneSwitch) {
   const std::string folder = make_sample_folder("flag", 600);
-  std::string scene = test::read_text(folder + "/scene.xml");
-  const size_t at = scene.find("self-contact=\"false\"");
-  ASSERT_NE(at, std::string::npos) << scene;
-  scene.replace(at, std::string("self-contact=\"false\"").size(), "self-contact=\"true\"");
-  test::write_text(folder + "/self.xml", scene);
+  const std::string scene = test::read_text(switched_scene(folder, "self-contact=\"false\"", "self-contact=\"true\"", "self.xml"));
   const auto r = test::run(test::tool_path("drape-free") + " --json " + folder + "/self.xml -o " + folder + "/self.obj");
   ASSERT_EQ(r.status, 0) << r.err << r.out;
   EXPECT_NE(r.out.find("\"self_contact\":"), std::string::npos) << r.out;
@@ -113,26 +122,13 @@ TEST(DrapeFree, SelfContactIsASceneSwitch) {
 
 TEST(DrapeFree, DrapesCoarseToFineAndReportsEveryLevel) {
   const std::string folder = make_sample_folder("flag", 1200);
-  const std::string out = folder + "/draped.obj";
-  const auto r = test::run(test::tool_path("drape-free") + " --json --coarse-levels 300 " + folder + "/scene.xml -o " + out);
-  ASSERT_EQ(r.status, 0) << r.err << r.out;
-  const auto check = test::run("/usr/bin/python3 -c \"import json,sys; d=json.loads(sys.argv[1]); l=d['levels']; "
-                               "assert d['converged'] and d['residual'] <= 1e-6 and len(l) == 2, d; "
-                               "assert 200 < l[0]['triangles'] < 400 and l[0]['converged'] and l[1]['residual'] == d['residual'], l; "
-                               "assert d['time_s']['total'] >= l[0]['time_s'] + l[1]['time_s'], d\" '" + r.out + "'");
-  EXPECT_EQ(check.status, 0) << check.err;
-  const Garment before = read_garment(folder + "/garment.obj"), after = read_garment(out);
-  EXPECT_EQ(after.P, before.P);  // the garment's own mesh, not a coarse one
-  EXPECT_EQ(after.F, before.F);
-  const Scene scene = read_scene_xml(folder + "/scene.xml");
-  for (int v : pinned_vertices(scene, before.V)) EXPECT_EQ(after.V.row(v), before.V.row(v)) << "pin " << v << " moved";
+  expect_drape(folder, "--coarse-levels 300",
+               "l=d['levels']; assert d['converged'] and d['residual'] <= 1e-6 and len(l) == 2, d; "
+               "assert 200 < l[0]['triangles'] < 400 and l[0]['converged'] and l[1]['residual'] == d['residual'], l; "
+               "assert d['time_s']['total'] >= l[0]['time_s'] + l[1]['time_s'], d");
 
   // Coarse levels cannot carry self-contact: a clear error, nothing written.
-  std::string self = test::read_text(folder + "/scene.xml");
-  const size_t at = self.find("self-contact=\"false\"");
-  ASSERT_NE(at, std::string::npos) << self;
-  self.replace(at, std::string("self-contact=\"false\"").size(), "self-contact=\"true\"");
-  test::write_text(folder + "/self.xml", self);
+  switched_scene(folder, "self-contact=\"false\"", "self-contact=\"true\"", "self.xml");
   const auto b = test::run(test::tool_path("drape-free") + " --coarse-levels 300 " + folder + "/self.xml -o " + folder + "/self.obj");
   EXPECT_EQ(b.status, 1);
   EXPECT_NE(b.err.find(folder + "/self.xml"), std::string::npos) << b.err;
