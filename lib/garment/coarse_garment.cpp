@@ -14,6 +14,7 @@
 #include "garment/seams.h"
 #include "mesh/isotropic_mesh.h"
 #include "mesh/mesh_edges.h"
+#include "mesh/triangle_geometry.h"
 
 namespace foldsketch {
 namespace {
@@ -50,17 +51,12 @@ double loop_area(const MatrixX2d& P, const std::vector<int>& loop) {
 } // namespace
 
 double spacing_for_triangles(const Garment& g, int triangles) {
-  double area = 0.0;
-  for (int f = 0; f < g.FP.rows(); ++f) {
-    const Vector2d a = g.P.row(g.FP(f, 0)), b = g.P.row(g.FP(f, 1)), c = g.P.row(g.FP(f, 2));
-    const Vector2d u = b - a, v = c - a;
-    area += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
-  }
+  const double area = 0.5 * double_areas(g.P, g.FP).cwiseAbs().sum();
   if (triangles <= 0 || !(area > 0.0)) throw ArgumentError("spacing_for_triangles: no pattern area or no triangles asked for");
   return std::sqrt(4.0 * area / (std::sqrt(3.0) * triangles));
 }
 
-Garment coarse_garment(const Garment& g, double spacing) {
+Garment coarse_garment(const Garment& g, double spacing, VectorXi* original_vertex) {
   if (!(spacing > 0.0)) throw ArgumentError("coarse_garment: the spacing must be positive");
   if (!g.stitches.empty()) throw ArgumentError("coarse_garment: the garment has explicit stitches, which a coarser mesh cannot carry yet");
   const VectorXi drape = pattern_to_drape(g);
@@ -179,8 +175,12 @@ Garment coarse_garment(const Garment& g, double spacing) {
     out.FP.row(static_cast<long>(f)) = FP[f];
     out.face_panel(static_cast<long>(f)) = face_panel[f];
   }
-  out.V = MatrixX3d::Zero(drape_count, 3);
+  out.V = MatrixX3d::Zero(drape_count, 3);  // sized for transfer_drape, which fills it
   out.V = transfer_drape(g, g.V, out);
+  if (original_vertex) {
+    *original_vertex = VectorXi::Constant(drape_count, -1);
+    for (const auto& [original, coarse] : coarse_of) (*original_vertex)(coarse) = original;
+  }
   return out;
 }
 

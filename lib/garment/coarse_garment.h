@@ -14,8 +14,9 @@ namespace foldsketch {
 // the same drape vertices and stay sewn. Panels keep their names and order; the drape is
 // carried over by transfer_drape. Throws ArgumentError for a garment with explicit stitches
 // (a coarser mesh cannot carry them yet), a spacing that is not positive, or one that leaves
-// some boundary loop with fewer than three vertices.
-Garment coarse_garment(const Garment& g, double spacing);
+// some boundary loop with fewer than three vertices. original_vertex, when given, gets for
+// each drape vertex of the result the drape vertex of g it is (the kept outline vertices), or -1.
+Garment coarse_garment(const Garment& g, double spacing, VectorXi* original_vertex = nullptr);
 
 // The spacing that gives about `triangles` triangles for g's pattern area (a lattice of
 // spacing s has triangles of area sqrt(3)/4 s^2).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <unordered_map>
 
 #include "core/error.h"
 #include "garment/coarse_garment.h"
@@ -23,10 +24,6 @@ CoarseToFineResult solve_drape_coarse_to_fine(const Garment& garment, const Scen
   const auto start = std::chrono::steady_clock::now();
   if (scene.physics.self_contact)
     throw ArgumentError("coarse-to-fine draping: the scene asks for self-contact, which needs the garment's own mesh throughout");
-  // A coarse outline vertex is an original vertex; this close to one it is that vertex [m]
-  // (transfer_drape carries it over up to roundoff).
-  constexpr double kSameVertex = 1e-9;
-
   CoarseToFineResult out;
   Garment placed = garment;
   placed.V = initial;
@@ -42,21 +39,20 @@ CoarseToFineResult solve_drape_coarse_to_fine(const Garment& garment, const Scen
       out.levels.push_back({static_cast<int>(model.triangles.size()), out.drape.stats});
       break;
     }
-    Garment coarse = coarse_garment(placed, spacing_for_triangles(placed, level_triangles[level]));
-    // Pins: the scene's boxes on the coarse drape, and the model's pinned vertices the outline kept.
+    VectorXi original;  // the original drape vertex of each kept coarse vertex, else -1
+    Garment coarse = coarse_garment(placed, spacing_for_triangles(placed, level_triangles[level]), &original);
+    // Pins: the scene's boxes on the coarse drape, and the model's pinned vertices the outline
+    // kept, held exactly where the model holds them.
     Scene boxes_only = scene;
     for (VertexSelector& s : boxes_only.pins) s.vertices.clear();
     std::vector<int> pinned = pinned_vertices(boxes_only, coarse.V);
-    for (const Pin& p : model.pins) {
-      int nearest = -1;
-      double distance = kSameVertex;
-      for (int v = 0; v < coarse.V.rows(); ++v) {
-        const double d = (coarse.V.row(v).transpose() - p.position).norm();
-        if (d <= distance) distance = d, nearest = v;
-      }
-      if (nearest < 0) continue;
-      coarse.V.row(nearest) = p.position.transpose();
-      pinned.push_back(nearest);
+    std::unordered_map<int, const Pin*> pin_of;
+    for (const Pin& p : model.pins) pin_of[p.vertex] = &p;
+    for (int v = 0; v < coarse.V.rows(); ++v) {
+      const auto it = original(v) >= 0 ? pin_of.find(original(v)) : pin_of.end();
+      if (it == pin_of.end()) continue;
+      coarse.V.row(v) = it->second->position.transpose();
+      pinned.push_back(v);
     }
     std::sort(pinned.begin(), pinned.end());
     pinned.erase(std::unique(pinned.begin(), pinned.end()), pinned.end());

@@ -7,20 +7,15 @@
 
 #include "core/error.h"
 #include "garment/seams.h"
+#include "mesh/triangle_geometry.h"
 #include "samples/sample_scenes.h"
 #include "support/test_support.h"
 
 namespace foldsketch {
 namespace {
 
-double pattern_area(const Garment& g) {
-  double area = 0.0;
-  for (int f = 0; f < g.FP.rows(); ++f) {
-    const Vector2d u = g.P.row(g.FP(f, 1)) - g.P.row(g.FP(f, 0)), v = g.P.row(g.FP(f, 2)) - g.P.row(g.FP(f, 0));
-    area += 0.5 * (u.x() * v.y() - u.y() * v.x());  // signed: every triangle counter-clockwise
-  }
-  return area;
-}
+// Signed: every triangle is counter-clockwise (checked below), so it is the area.
+double pattern_area(const Garment& g) { return 0.5 * double_areas(g.P, g.FP).sum(); }
 
 // Checks shared by the samples: sound structure, the same panels and seams, the triangle count
 // near the target, and the kept outline vertices exactly where they were in the drape.
@@ -30,11 +25,8 @@ void expect_coarse_version(const Garment& fine, const Garment& coarse, int trian
   EXPECT_NEAR(static_cast<double>(coarse.F.rows()), triangles, 0.25 * triangles);
   // Every triangle counter-clockwise in the pattern, so the signed area is the area; it keeps
   // the fine patterns' area up to the chords cut off curved outlines.
-  for (int f = 0; f < coarse.FP.rows(); ++f) {
-    const Vector2d u = coarse.P.row(coarse.FP(f, 1)) - coarse.P.row(coarse.FP(f, 0)),
-                   v = coarse.P.row(coarse.FP(f, 2)) - coarse.P.row(coarse.FP(f, 0));
-    ASSERT_GT(u.x() * v.y() - u.y() * v.x(), 0.0) << "triangle " << f;
-  }
+  const VectorXd areas = double_areas(coarse.P, coarse.FP);
+  for (int f = 0; f < coarse.FP.rows(); ++f) ASSERT_GT(areas(f), 0.0) << "triangle " << f;
   EXPECT_NEAR(pattern_area(coarse), pattern_area(fine), 0.01 * pattern_area(fine));
 
   const std::vector<Seam> fine_seams = seams(fine, panel_boundaries(fine));
