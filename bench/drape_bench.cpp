@@ -126,6 +126,13 @@ void print_row(long triangles, const std::string& label, const Summary& s) {
   std::fflush(stdout);
 }
 
+// The warm start's own distance to the reference, under the presets' rows: what a solver that
+// stopped at once would score, the floor against which their errors are read.
+void print_start_row(long triangles, const ErrorMm& e) {
+  std::printf("%9ld %-9s %10s %7s %8s %8s %9s %10.3f %10.3f\n", triangles, "(start)", "-", "0", "-", "-", "-", e.mean, e.max);
+  std::fflush(stdout);
+}
+
 // The stored starts for a mesh of `triangles` triangles in `folder`: K = 1, 2, ... while the
 // files exist.
 std::vector<std::string> stored_start_paths(const std::string& folder, long triangles) {
@@ -486,6 +493,7 @@ int main(int argc, char** argv) {
       const ClothModel wider_model = cloth_model(wider, sample.scene, &body, pinned);
       table_header(title);
       std::vector<std::pair<std::string, std::vector<Summary>>> per_preset;  // over the starts
+      std::vector<ErrorMm> start_errors;
       for (size_t i = 0; i < warm_starts.size(); ++i) {
         const auto& [name, start] = warm_starts[i];
         if (!name.empty()) std::printf("%9s from %s\n", "", name.c_str());
@@ -493,6 +501,10 @@ int main(int argc, char** argv) {
         if (!no_reference) wider_reference = solve_drape(wider_model, start, reference_settings);
         // Only the first start's solves go to the trajectory CSV (one line per size in the plot).
         const Timed timed = time_presets("warm", wider_model, start, wider_reference ? &*wider_reference : nullptr, i == 0);
+        if (wider_reference) {
+          start_errors.push_back(error_mm(start, wider_reference->V));
+          print_start_row(triangles, start_errors.back());
+        }
         for (size_t p = 0; p < timed.presets.size(); ++p) {
           if (i == 0) per_preset.emplace_back(timed.presets[p].first, std::vector<Summary>{});
           per_preset[p].second.push_back(timed.presets[p].second);
@@ -504,6 +516,13 @@ int main(int argc, char** argv) {
         const Summary row = all.size() > 1 ? median_summary(all) : all.front();
         if (all.size() > 1) print_row(triangles, preset, row);
         record("warm", triangles, preset, row, warm_csv);
+      }
+      if (start_errors.size() > 1) {
+        std::vector<double> means;
+        ErrorMm e;
+        for (const ErrorMm& s : start_errors) means.push_back(s.mean), e.max = std::max(e.max, s.max);
+        e.mean = median(means);
+        print_start_row(triangles, e);
       }
     }
   }
