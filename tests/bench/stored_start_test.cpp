@@ -83,24 +83,27 @@ TEST_F(StoredStart, RefusesAnotherMeshOrADamagedFile) {
 }
 
 // Every committed start (bench/starts/skirt-TRIANGLES-K.ply) belongs to the skirt mesh of that
-// size: the sizes drape_bench's table uses.
+// size, grid or isotropic (drape_bench --mesh): the sizes drape_bench's table uses.
 TEST_F(StoredStart, CommittedStartsMatchTheSkirtMeshes) {
   int checked = 0;
-  for (const int target : {5000, 10000, 20000, 54000}) {
-    SampleParams params;
-    params.triangles = target;
-    const Garment g = make_sample("skirt", params, &body.V).garment;
-    for (int k = 1; k <= 3; ++k) {
-      const std::string file = stored_start_path(test::source_path("bench/starts"), static_cast<long>(g.F.rows()), k);
-      SCOPED_TRACE(file);
-      const MatrixX3d x = read_stored_start(file, g.V.rows(), mesh_fingerprint(g));
-      EXPECT_TRUE(x.allFinite());
-      // A drape, not the placement: the folds moved it.
-      EXPECT_GT((x - g.V).rowwise().norm().mean(), 1e-3);
-      ++checked;
+  for (const SampleMesh mesh : {SampleMesh::Grid, SampleMesh::Isotropic}) {
+    for (const int target : {5000, 10000, 20000, 54000}) {
+      SampleParams params;
+      params.triangles = target;
+      params.mesh = mesh;
+      const Garment g = make_sample("skirt", params, &body.V).garment;
+      for (int k = 1; k <= 3; ++k) {
+        const std::string file = stored_start_path(test::source_path("bench/starts"), static_cast<long>(g.F.rows()), k);
+        SCOPED_TRACE(file);
+        const MatrixX3d x = read_stored_start(file, g.V.rows(), mesh_fingerprint(g));
+        EXPECT_TRUE(x.allFinite());
+        // A drape, not the placement: the folds moved it.
+        EXPECT_GT((x - g.V).rowwise().norm().mean(), 1e-3);
+        ++checked;
+      }
     }
   }
-  EXPECT_EQ(checked, 12);
+  EXPECT_EQ(checked, 24);
 }
 
 }  // namespace
