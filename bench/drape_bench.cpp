@@ -384,10 +384,11 @@ int main(int argc, char** argv) {
   std::ofstream c2f_csv;
   if (!c2f_csv_path.empty()) (c2f_csv.open(c2f_csv_path), c2f_csv << header);
   const auto coarse_to_fine = [&](const ClothModel& model, const SampleScene& sample) {
-    std::vector<int> levels;
-    for (int level : coarse_sizes)
-      if (level < static_cast<int>(model.triangles.size())) levels.push_back(level);
-    if (coarse_auto) levels = coarse_levels(static_cast<int>(model.triangles.size()));
+    const int triangles = static_cast<int>(model.triangles.size());
+    std::vector<int> levels = coarse_auto ? coarse_levels(triangles) : std::vector<int>{};
+    if (!coarse_auto)
+      for (int level : coarse_sizes)
+        if (level < triangles) levels.push_back(level);
     std::vector<double> seconds;
     std::vector<Summary> finest;
     std::string text;
