@@ -1,0 +1,84 @@
+#include "sim/pattern_change.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "core/error.h"
+#include "sim/bisected_cholesky.h"
+#include "sim/cloth_energy.h"
+
+namespace foldsketch {
+namespace {
+// Armijo sufficient decrease and the shortest step tried, as the drape solver's line search.
+constexpr double kArmijo = 1e-4, kMinStep = 1.0 / 1024;
+
+bool same_garment(const ClothModel& a, const ClothModel& b) {
+  if (a.vertex_count != b.vertex_count || a.triangles != b.triangles || a.pins.size() != b.pins.size()) return false;
+  for (size_t k = 0; k < a.pins.size(); ++k)
+    if (a.pins[k].vertex != b.pins[k].vertex || a.pins[k].position != b.pins[k].position) return false;
+  return true;
+}
+} // namespace
+
+PatternChangeStep predict_pattern_change(const ClothModel& before, const ClothModel& after, const MatrixX3d& x0,
+                                         const PatternChangeSettings& settings) {
+  const auto start = std::chrono::steady_clock::now();
+  if (!same_garment(before, after)) throw ArgumentError("predict_pattern_change: the two models are not the same garment");
+  if (x0.rows() != after.vertex_count || !x0.allFinite())
+    throw ArgumentError("predict_pattern_change: the start has the wrong size or non-finite coordinates");
+  PatternChangeStep step;
+  step.V = x0;
+  for (const Pin& p : after.pins) step.V.row(p.vertex) = p.position.transpose();
+  const auto done = [&](const char* why) {
+    step.message = why;
+    step.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return step;
+  };
+  if (after.self_contact || before.self_contact) return done("not with self-contact");
+  const ClothEnergy old_energy(before), new_energy(after);
+  const int n = new_energy.free_count();
+  if (n == 0) return done("no free vertices");
+
+  // The start's residual under its own patterns, scaled as the solver scales it (the free
+  // cloth's weight; without gravity a membrane force).
+  VectorXd g_old, g;
+  SparseMatrix H = old_energy.pattern();
+  old_energy.evaluate(step.V, &g_old, &H, HessianKind::Exact);
+  double scale = old_energy.gravity_force().norm();
+  if (!(scale > 0.0))
+    scale = std::max(before.material.stretch_warp, before.material.stretch_weft) * std::sqrt(before.contact_area.sum());
+  step.start_residual = g_old.norm() / scale;
+  const double e0 = new_energy.evaluate(step.V, &g, nullptr, HessianKind::Exact).total();
+  step.change_residual = g.norm() / scale;
+  if (!(g_old.norm() <= settings.max_force_ratio * g.norm()))
+    return done("the start is not an equilibrium of its patterns (or the patterns did not change)");
+
+  BisectedCholesky cholesky;
+  if (!cholesky.factorize(H)) return done("the start is not a stable equilibrium of its patterns (indefinite Hessian)");
+  VectorXd dx = cholesky.solve(-g);
+  double largest = 0.0;
+  for (int a = 0; a < n; ++a) largest = std::max(largest, dx.segment<3>(3 * a).norm());
+  if (!std::isfinite(largest)) return done("the predicted step is not finite");
+  if (after.body && largest > settings.max_displacement) {
+    dx *= settings.max_displacement / largest;
+    largest = settings.max_displacement;
+  }
+  const double slope = g.dot(dx);
+  if (!(slope < 0.0)) return done("the predicted step does not lower the energy");
+  const auto& free = new_energy.free_vertices();
+  for (double alpha = 1.0; alpha >= kMinStep; alpha *= 0.5) {
+    MatrixX3d trial = step.V;
+    for (int a = 0; a < n; ++a) trial.row(free[static_cast<size_t>(a)]) += alpha * dx.segment<3>(3 * a).transpose();
+    const double e = new_energy.evaluate(trial, nullptr, nullptr, HessianKind::Exact).total();
+    if (std::isfinite(e) && e <= e0 + kArmijo * alpha * slope) {
+      step.V = std::move(trial);
+      step.applied = true;
+      step.step_fraction = alpha;
+      step.step_length = alpha * largest;
+      return done("");
+    }
+  }
+  return done("no decrease of the energy along the predicted step");
+}
+
+} // namespace foldsketch

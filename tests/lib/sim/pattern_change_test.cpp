@@ -1,0 +1,102 @@
+// predict_pattern_change: the first-order response of an equilibrium to new patterns is a
+// Newton step with the old Hessian, so it leaves an error of second order in the change.
+#include "sim/pattern_change.h"
+
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "sim/drape_solver.h"
+#include "support/test_support.h"
+
+namespace foldsketch {
+namespace {
+
+ClothModel hanging_model(const Garment& g, const std::vector<int>& pinned) {
+  Scene scene;
+  scene.material = *material_preset("cotton-thin");
+  scene.physics.body_contact = false;
+  return cloth_model(g, scene, nullptr, pinned);
+}
+
+double mean_distance(const MatrixX3d& a, const MatrixX3d& b) { return (a - b).rowwise().norm().mean(); }
+
+struct Hanging {
+  Garment g;
+  std::vector<int> pinned;
+  MatrixX3d equilibrium;  // of g's own patterns
+};
+
+// A 0.3 m cotton sheet hanging from its top edge, at equilibrium (relative residual 1e-10).
+Hanging hanging_sheet() {
+  Hanging h{test::square_panel(10, 0.3), {}, {}};
+  h.pinned = test::top_row(h.g);
+  DrapeSettings tight;
+  tight.tolerance = 1e-10;
+  const DrapeResult r = solve_drape(hanging_model(h.g, h.pinned), h.g.V, tight);
+  EXPECT_TRUE(r.stats.converged) << r.stats.message;
+  h.equilibrium = r.V;
+  return h;
+}
+
+// The patterns lengthened along the warp (pattern y) by `change`; the pins stay where they are.
+ClothModel lengthened(const Hanging& h, double change) {
+  Garment longer = h.g;
+  longer.P.col(1) *= 1.0 + change;
+  longer.V = h.equilibrium;
+  return hanging_model(longer, h.pinned);
+}
+
+// Lengthening the patterns by 0.4 % and by 0.2 %: the predicted drape's distance to the new
+// equilibrium, relative to the start's, is of first order in the change (the step's own error
+// is of second order): small, and about halving with the change.
+TEST(PatternChange, LeavesAnErrorOfSecondOrderInTheChange) {
+  const Hanging h = hanging_sheet();
+  Garment own = h.g;
+  own.V = h.equilibrium;
+  const ClothModel before = hanging_model(own, h.pinned);
+  DrapeSettings tight;
+  tight.tolerance = 1e-10;
+  std::vector<double> relative;
+  for (const double change : {0.004, 0.002}) {
+    const ClothModel after = lengthened(h, change);
+    const PatternChangeStep step = predict_pattern_change(before, after, h.equilibrium);
+    ASSERT_TRUE(step.applied) << step.message;
+    EXPECT_EQ(step.step_fraction, 1.0);
+    EXPECT_LT(step.start_residual, 1e-8);
+    const DrapeResult end = solve_drape(after, h.equilibrium, tight);
+    ASSERT_TRUE(end.stats.converged);
+    const double moved = mean_distance(h.equilibrium, end.V);
+    EXPECT_GT(moved, 1e-4 * change / 0.004);  // the change moves the sheet (0.6 mm at 0.4 %)
+    relative.push_back(mean_distance(step.V, end.V) / moved);
+  }
+  EXPECT_LT(relative[0], 0.05);
+  EXPECT_LT(relative[1], 0.7 * relative[0]);
+}
+
+// A start that is not an equilibrium of its patterns (the flat sheet, before it hangs: its
+// weight is unbalanced under the old patterns as under the new) is returned as it is, with the
+// reason; so is an equilibrium whose patterns did not change.
+TEST(PatternChange, LeavesAStartThatIsNoEquilibriumAlone) {
+  const Hanging h = hanging_sheet();
+  const ClothModel before = hanging_model(h.g, h.pinned);
+  const ClothModel after = lengthened(h, 1e-4);
+  const PatternChangeStep flat = predict_pattern_change(before, after, h.g.V);
+  EXPECT_FALSE(flat.applied);
+  EXPECT_NE(flat.message.find("not an equilibrium"), std::string::npos) << flat.message;
+  EXPECT_NEAR(flat.start_residual, 1.0, 0.05);  // the whole weight
+  EXPECT_EQ(flat.V, h.g.V);
+
+  const PatternChangeStep same = predict_pattern_change(before, before, h.equilibrium);
+  EXPECT_FALSE(same.applied);
+  EXPECT_EQ(same.V, h.equilibrium);
+}
+
+TEST(PatternChange, RefusesModelsOfTwoGarments) {
+  const Hanging h = hanging_sheet();
+  const ClothModel before = hanging_model(h.g, h.pinned);
+  const ClothModel unpinned = hanging_model(h.g, {});
+  EXPECT_THROW(predict_pattern_change(before, unpinned, h.equilibrium), ArgumentError);
+}
+
+} // namespace
+} // namespace foldsketch
