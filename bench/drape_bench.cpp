@@ -31,6 +31,7 @@
 #include "samples/sample_scenes.h"
 #include "sim/coarse_to_fine.h"
 #include "sim/drape_solver.h"
+#include "sim/pattern_change.h"
 #include "stored_start.h"
 
 using namespace foldsketch;
@@ -128,8 +129,8 @@ void print_row(long triangles, const std::string& label, const Summary& s) {
 
 // The warm start's own distance to the reference, under the presets' rows: what a solver that
 // stopped at once would score, the floor against which their errors are read.
-void print_start_row(long triangles, const ErrorMm& e) {
-  std::printf("%9ld %-9s %10s %7s %8s %8s %9s %10.3f %10.3f\n", triangles, "(start)", "-", "0", "-", "-", "-", e.mean, e.max);
+void print_start_row(long triangles, const ErrorMm& e, const char* label = "(start)") {
+  std::printf("%9ld %-9s %10s %7s %8s %8s %9s %10.3f %10.3f\n", triangles, label, "-", "0", "-", "-", "-", e.mean, e.max);
   std::fflush(stdout);
 }
 
@@ -157,7 +158,7 @@ int main(int argc, char** argv) {
   std::string material_name;
   double ease = 0.02;
   std::string trajectory_path;
-  bool trace = false, no_reference = false, straight_steps = false;
+  bool trace = false, no_reference = false, straight_steps = false, no_predictor = false;
   double time_step = DrapeSettings{}.time_step;
   std::string metric = "laplacian";
   std::vector<double> perturbations;
@@ -188,6 +189,9 @@ int main(int argc, char** argv) {
                  "what the damping of the static steps measures a step by (DrapeSettings::proximal_metric): laplacian "
                  "(the default), or mass (the quasi-static backward-Euler step), for the timed and the reference drapes")
       ->check(CLI::IsMember({"laplacian", "mass"}));
+  app.add_flag("--no-predictor", no_predictor,
+               "warm rows: start the re-drape (and its reference) from the stored start itself, not from the pattern-change "
+               "predictor's step (lib/sim/pattern_change.h), as before the predictor");
   app.add_flag("--straight-steps", straight_steps,
                "line searches along the straight Newton step, as before the curved steps (DrapeSettings::curved_steps), "
                "for the timed and the reference drapes");
@@ -233,6 +237,7 @@ int main(int argc, char** argv) {
   DrapeSettings defaults;  // what every drape here starts from
   defaults.proximal_metric = metric == "mass" ? ProximalMetric::Mass : ProximalMetric::Laplacian;
   defaults.curved_steps = !straight_steps;
+  const bool predictor = !no_predictor;
   const DrapeProgress tracer = [](const DrapeStats& s, const MatrixX3d&) {
     std::fprintf(stderr, "%5d factorisations %5d residual %.3e step %.3f length %.2e damping %.1e\n", s.newton_iterations,
                  s.factorizations, s.residual, s.step_fraction, s.step_length, s.damping);
@@ -292,8 +297,10 @@ int main(int argc, char** argv) {
     std::vector<std::pair<std::string, Summary>> presets;
     MatrixX3d drape;
   };
+  // `head_start` [s]: time spent before the solve on making `start` (the pattern-change
+  // predictor's), added to every run's and every trajectory point's time.
   const auto time_presets = [&](const char* start_name, const ClothModel& model, const MatrixX3d& start,
-                                const DrapeResult* reference, bool follow_trajectory) {
+                                const DrapeResult* reference, bool follow_trajectory, double head_start = 0.0) {
     Timed timed{{}, start};
     bool have_accurate = false;
     for (const SolverPreset preset : {SolverPreset::Accurate, SolverPreset::Fast}) {
@@ -312,14 +319,14 @@ int main(int argc, char** argv) {
       std::vector<Point> along;
       const bool follow = reference && trajectory.is_open() && follow_trajectory;
       for (int r = 0; r < runs; ++r) {
-        if (follow) along.assign(1, {0, 0.0, std::numeric_limits<double>::quiet_NaN(), error_mm(start, reference->V)});
+        if (follow) along.assign(1, {0, head_start, std::numeric_limits<double>::quiet_NaN(), error_mm(start, reference->V)});
         const bool last = r + 1 == runs;
         result = solve_drape(model, start, settings, [&](const DrapeStats& s, const MatrixX3d& x) {
           if (trace) tracer(s, x);
           if (!follow || !last) return;
-          along.push_back({s.newton_iterations, s.seconds_total, s.residual, error_mm(x, reference->V)});
+          along.push_back({s.newton_iterations, head_start + s.seconds_total, s.residual, error_mm(x, reference->V)});
         });
-        seconds.push_back(result.stats.seconds_total);
+        seconds.push_back(head_start + result.stats.seconds_total);
       }
       std::optional<ErrorMm> error;
       if (reference) error = error_mm(result.V, reference->V);
@@ -498,19 +505,31 @@ int main(int argc, char** argv) {
       for (size_t i = 0; i < warm_starts.size(); ++i) {
         const auto& [name, start] = warm_starts[i];
         if (!name.empty()) std::printf("%9s from %s\n", "", name.c_str());
+        // The re-drape starts, as drape-free's does, from the pattern-change predictor's step
+        // (lib/sim/pattern_change.h) unless --no-predictor; its time counts in every row.
+        PatternChangeStep predicted;
+        predicted.V = start;
+        if (predictor) {
+          predicted = predict_pattern_change(model, wider_model, start);
+          std::printf("%9s predictor: %s, %.3f of the step, largest move %.2f mm, %.3f s (residual %.2e, %.2e with the new "
+                      "patterns)\n", "", predicted.applied ? "applied" : predicted.message.c_str(), predicted.step_fraction,
+                      1e3 * predicted.step_length, predicted.seconds, predicted.start_residual, predicted.change_residual);
+        }
         std::optional<DrapeResult> wider_reference;
-        if (!no_reference) wider_reference = solve_drape(wider_model, start, reference_settings);
+        if (!no_reference) wider_reference = solve_drape(wider_model, predicted.V, reference_settings);
         // Only the first start's solves go to the trajectory CSV (one line per size in the plot).
-        const Timed timed = time_presets("warm", wider_model, start, wider_reference ? &*wider_reference : nullptr, i == 0);
+        const Timed timed = time_presets("warm", wider_model, predicted.V, wider_reference ? &*wider_reference : nullptr, i == 0,
+                                         predicted.seconds);
         if (wider_reference) {
           start_errors.push_back(error_mm(start, wider_reference->V));
           print_start_row(triangles, start_errors.back());
+          if (predicted.applied) print_start_row(triangles, error_mm(predicted.V, wider_reference->V), "(predict)");
         }
         for (size_t p = 0; p < timed.presets.size(); ++p) {
           if (i == 0) per_preset.emplace_back(timed.presets[p].first, std::vector<Summary>{});
           per_preset[p].second.push_back(timed.presets[p].second);
         }
-        if (wider_reference) perturb_start(wider_model, start, *wider_reference);
+        if (wider_reference) perturb_start(wider_model, predicted.V, *wider_reference);
       }
       if (warm_starts.size() > 1) std::printf("%9s median over the %zu starts (residual, max error: the worst)\n", "", warm_starts.size());
       for (const auto& [preset, all] : per_preset) {

@@ -83,6 +83,32 @@ TEST(DrapeFree, BadInputIsLocatedAndWritesNothing) {
   EXPECT_FALSE(std::filesystem::exists(folder + "/out.obj"));
 }
 
+// A re-drape after the patterns change (--patterns new, --init the drape of the old ones)
+// starts from the drape's predicted response to the change, and says so; --no-predictor and
+// an unchanged pattern start from the drape as it is.
+TEST(DrapeFree, ReDrapeStartsFromThePredictedResponseToThePatternChange) {
+  const std::string folder = make_sample_folder("flag", 600);
+  const std::string drape = folder + "/drape.obj";
+  ASSERT_EQ(test::run(test::tool_path("drape-free") + " " + folder + "/scene.xml -o " + drape).status, 0);
+  Garment wider = read_garment(drape);
+  wider.P.col(0) *= 1.02;
+  write_garment(wider, folder + "/wider.obj");
+  const std::string redrape = test::tool_path("drape-free") + " --json " + folder + "/scene.xml --patterns " + folder +
+                              "/wider.obj --init " + drape + " -o " + folder + "/redraped.obj";
+  const auto check = [](const test::RunResult& r, const std::string& assertions) {
+    ASSERT_EQ(r.status, 0) << r.err << r.out;
+    const auto c = test::run("/usr/bin/python3 -c \"import json,sys; d=json.loads(sys.argv[1]); " + assertions + "\" '" + r.out + "'");
+    EXPECT_EQ(c.status, 0) << c.err;
+  };
+  check(test::run(redrape),
+        "p=d['predictor']; assert d['converged'] and p['applied'] and p['message'] == '' and 0 < p['step_fraction'] <= 1 "
+        "and p['largest_move_m'] > 0 and p['time_s'] <= d['time_s']['total'], d");
+  check(test::run(redrape + " --no-predictor"), "assert d['converged'] and 'predictor' not in d, d");
+  EXPECT_EQ(read_garment(folder + "/redraped.obj").P, wider.P);
+  check(test::run(test::tool_path("drape-free") + " --json " + folder + "/scene.xml --init " + drape + " -o " + folder + "/again.obj"),
+        "assert d['converged'] and 'predictor' not in d and d['newton_iterations'] == 0, d");
+}
+
 // The scene switch for self-contact reaches the engine: the flag drapes with it on, and the
 // report names the term.
 TEST(DrapeFree, SelfContactIsASceneSwitch) {
