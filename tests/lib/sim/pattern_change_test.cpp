@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "sim/cloth_energy.h"
 #include "sim/drape_solver.h"
 #include "support/test_support.h"
 
@@ -89,6 +90,28 @@ TEST(PatternChange, LeavesAStartThatIsNoEquilibriumAlone) {
   const PatternChangeStep same = predict_pattern_change(before, before, h.equilibrium);
   EXPECT_FALSE(same.applied);
   EXPECT_EQ(same.V, h.equilibrium);
+}
+
+// An extreme change (the patterns twice as wide, gathered under pins that stay where they were):
+// the step is finite and lowers the new energy, or the start is left as it is; either way the
+// re-drape from it converges.
+TEST(PatternChange, AnExtremeGatheringGivesAFiniteStartThatDrapes) {
+  const Hanging h = hanging_sheet();
+  Garment own = h.g;
+  own.V = h.equilibrium;
+  const ClothModel before = hanging_model(own, h.pinned);
+  Garment wide = own;
+  wide.P.col(0) *= 2.0;
+  const ClothModel after = hanging_model(wide, h.pinned);
+  const PatternChangeStep step = predict_pattern_change(before, after, h.equilibrium);
+  ASSERT_TRUE(step.V.allFinite());
+  const ClothEnergy energy(after);
+  const double e0 = energy.evaluate(h.equilibrium, nullptr, nullptr, HessianKind::Exact).total();
+  const double e1 = energy.evaluate(step.V, nullptr, nullptr, HessianKind::Exact).total();
+  if (step.applied) EXPECT_LT(e1, e0);
+  else EXPECT_EQ(step.V, h.equilibrium) << step.message;
+  const DrapeResult end = solve_drape(after, step.V, DrapeSettings{});
+  EXPECT_TRUE(end.stats.converged) << end.stats.message;
 }
 
 TEST(PatternChange, RefusesModelsOfTwoGarments) {
