@@ -96,6 +96,13 @@ Garment polygon_panel(const std::string& name, const MatrixX2d& outline, double 
   return g;
 }
 
+ClothModel cotton_model(const Garment& g, const std::vector<int>& pinned) {
+  Scene scene;
+  scene.material = *material_preset("cotton-thin");
+  scene.physics.body_contact = false;
+  return cloth_model(g, scene, nullptr, pinned);
+}
+
 std::vector<int> top_row(const Garment& g) {
   std::vector<int> top;
   for (int v = 0; v < g.V.rows(); ++v)

@@ -30,6 +30,9 @@ TriangleMesh v_trough(double slope_degrees);
 // The drape vertices in g's highest row (largest y), the ones a hanging test pins.
 std::vector<int> top_row(const Garment& g);
 
+// g's cloth in thin cotton under gravity, with no body, held at `pinned`.
+ClothModel cotton_model(const Garment& g, const std::vector<int>& pinned);
+
 // The skirt sample at about `triangles` triangles in its sewn placement around the project's
 // body (samples/bodies/mean_all.obj), pinned at its waist as its scene says, with its model.
 struct SkirtOnBody {

@@ -12,13 +12,6 @@
 namespace foldsketch {
 namespace {
 
-ClothModel hanging_model(const Garment& g, const std::vector<int>& pinned) {
-  Scene scene;
-  scene.material = *material_preset("cotton-thin");
-  scene.physics.body_contact = false;
-  return cloth_model(g, scene, nullptr, pinned);
-}
-
 double mean_distance(const MatrixX3d& a, const MatrixX3d& b) { return (a - b).rowwise().norm().mean(); }
 
 struct Hanging {
@@ -33,7 +26,7 @@ Hanging hanging_sheet() {
   h.pinned = test::top_row(h.g);
   DrapeSettings tight;
   tight.tolerance = 1e-10;
-  const DrapeResult r = solve_drape(hanging_model(h.g, h.pinned), h.g.V, tight);
+  const DrapeResult r = solve_drape(test::cotton_model(h.g, h.pinned), h.g.V, tight);
   EXPECT_TRUE(r.stats.converged) << r.stats.message;
   h.equilibrium = r.V;
   return h;
@@ -44,7 +37,7 @@ ClothModel lengthened(const Hanging& h, double change) {
   Garment longer = h.g;
   longer.P.col(1) *= 1.0 + change;
   longer.V = h.equilibrium;
-  return hanging_model(longer, h.pinned);
+  return test::cotton_model(longer, h.pinned);
 }
 
 // Lengthening the patterns by 0.4 % and by 0.2 %: the predicted drape's distance to the new
@@ -54,7 +47,7 @@ TEST(PatternChange, LeavesAnErrorOfSecondOrderInTheChange) {
   const Hanging h = hanging_sheet();
   Garment own = h.g;
   own.V = h.equilibrium;
-  const ClothModel before = hanging_model(own, h.pinned);
+  const ClothModel before = test::cotton_model(own, h.pinned);
   DrapeSettings tight;
   tight.tolerance = 1e-10;
   std::vector<double> relative;
@@ -79,7 +72,7 @@ TEST(PatternChange, LeavesAnErrorOfSecondOrderInTheChange) {
 // reason; so is an equilibrium whose patterns did not change.
 TEST(PatternChange, LeavesAStartThatIsNoEquilibriumAlone) {
   const Hanging h = hanging_sheet();
-  const ClothModel before = hanging_model(h.g, h.pinned);
+  const ClothModel before = test::cotton_model(h.g, h.pinned);
   const ClothModel after = lengthened(h, 1e-4);
   const PatternChangeStep flat = predict_pattern_change(before, after, h.g.V);
   EXPECT_FALSE(flat.applied);
@@ -99,10 +92,10 @@ TEST(PatternChange, AnExtremeGatheringGivesAFiniteStartThatDrapes) {
   const Hanging h = hanging_sheet();
   Garment own = h.g;
   own.V = h.equilibrium;
-  const ClothModel before = hanging_model(own, h.pinned);
+  const ClothModel before = test::cotton_model(own, h.pinned);
   Garment wide = own;
   wide.P.col(0) *= 2.0;
-  const ClothModel after = hanging_model(wide, h.pinned);
+  const ClothModel after = test::cotton_model(wide, h.pinned);
   const PatternChangeStep step = predict_pattern_change(before, after, h.equilibrium);
   ASSERT_TRUE(step.V.allFinite());
   const ClothEnergy energy(after);
@@ -116,8 +109,8 @@ TEST(PatternChange, AnExtremeGatheringGivesAFiniteStartThatDrapes) {
 
 TEST(PatternChange, RefusesModelsOfTwoGarments) {
   const Hanging h = hanging_sheet();
-  const ClothModel before = hanging_model(h.g, h.pinned);
-  const ClothModel unpinned = hanging_model(h.g, {});
+  const ClothModel before = test::cotton_model(h.g, h.pinned);
+  const ClothModel unpinned = test::cotton_model(h.g, {});
   EXPECT_THROW(predict_pattern_change(before, unpinned, h.equilibrium), ArgumentError);
 }
 

@@ -14,13 +14,6 @@
 namespace foldsketch {
 namespace {
 
-ClothModel sheet_model(const Garment& g, const std::vector<int>& pinned) {
-  Scene scene;
-  scene.material = *material_preset("cotton-thin");
-  scene.physics.body_contact = false;
-  return cloth_model(g, scene, nullptr, pinned);
-}
-
 // Free-vertex step of every vertex of x moved by `motion(position)`.
 template <class Motion>
 VectorXd step_of(const ClothEnergy& energy, const MatrixX3d& x, Motion motion) {
@@ -57,7 +50,7 @@ double largest_stretch(const Garment& g, const MatrixX3d& x, const MatrixX3d& y)
 // fourth order.
 TEST(StepCurvature, SwingingSheetFollowsTheRotation) {
   const Garment g = test::square_panel(12, 0.3);
-  const ClothModel model = sheet_model(g, test::top_row(g));
+  const ClothModel model = test::cotton_model(g, test::top_row(g));
   const ClothEnergy energy(model);
   const StepCurvature curvature(model, energy);
   const Vector3d axis = Vector3d::UnitX(), origin(0.0, 0.3, 0.0);
@@ -79,7 +72,7 @@ TEST(StepCurvature, SwingingSheetFollowsTheRotation) {
 // unpinned sheet turning in its own plane gets the rotation's second-order part up to a shift.
 TEST(StepCurvature, UnpinnedSheetTurningInItsPlane) {
   const Garment g = test::square_panel(10, 0.3);
-  const ClothModel model = sheet_model(g, {});
+  const ClothModel model = test::cotton_model(g, {});
   const ClothEnergy energy(model);
   const StepCurvature curvature(model, energy);
   const double theta = 0.15;
@@ -96,7 +89,7 @@ TEST(StepCurvature, UnpinnedSheetTurningInItsPlane) {
 // A step with no gradient (a translation) stretches nothing and needs no curvature.
 TEST(StepCurvature, TranslationIsStraight) {
   const Garment g = test::square_panel(6, 0.3);
-  const ClothModel model = sheet_model(g, {});
+  const ClothModel model = test::cotton_model(g, {});
   const ClothEnergy energy(model);
   const StepCurvature curvature(model, energy);
   const VectorXd dx = step_of(energy, g.V, [](const Vector3d&) { return Vector3d(0.01, -0.02, 0.005); });
@@ -107,7 +100,7 @@ TEST(StepCurvature, TranslationIsStraight) {
 // set no target, and the result stays finite.
 TEST(StepCurvature, CollapsedDrapeTrianglesStayFinite) {
   const Garment g = test::square_panel(6, 0.3);
-  const ClothModel model = sheet_model(g, test::top_row(g));
+  const ClothModel model = test::cotton_model(g, test::top_row(g));
   const ClothEnergy energy(model);
   const StepCurvature curvature(model, energy);
   MatrixX3d x = g.V;
