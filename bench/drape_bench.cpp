@@ -237,7 +237,6 @@ int main(int argc, char** argv) {
   DrapeSettings defaults;  // what every drape here starts from
   defaults.proximal_metric = metric == "mass" ? ProximalMetric::Mass : ProximalMetric::Laplacian;
   defaults.curved_steps = !straight_steps;
-  const bool predictor = !no_predictor;
   const DrapeProgress tracer = [](const DrapeStats& s, const MatrixX3d&) {
     std::fprintf(stderr, "%5d factorisations %5d residual %.3e step %.3f length %.2e damping %.1e\n", s.newton_iterations,
                  s.factorizations, s.residual, s.step_fraction, s.step_length, s.damping);
@@ -509,7 +508,7 @@ int main(int argc, char** argv) {
         // (lib/sim/pattern_change.h) unless --no-predictor; its time counts in every row.
         PatternChangeStep predicted;
         predicted.V = start;
-        if (predictor) {
+        if (!no_predictor) {
           predicted = predict_pattern_change(model, wider_model, start);
           std::printf("%9s predictor: %s, %.3f of the step, largest move %.2f mm, %.3f s (residual %.2e, %.2e with the new "
                       "patterns)\n", "", predicted.applied ? "applied" : predicted.message.c_str(), predicted.step_fraction,

@@ -190,7 +190,9 @@ int main(int argc, char** argv) {
     } catch (const ArgumentError& e) {
       throw InputError(scene_path, 0, e.what());
     }
-    if (init_patterns && !no_predictor && !coarse_to_fine && coarse_levels_asked.empty()) {
+    // The predictor serves static re-drapes on the garment's own mesh only.
+    if (init_patterns && !no_predictor && !coarse_to_fine && coarse_levels_asked.empty() &&
+        scene.simulator.mode == SimulationMode::Static) {
       Garment before = garment;
       before.P = *init_patterns;
       try {
@@ -233,7 +235,7 @@ int main(int argc, char** argv) {
       result.stats.seconds_total = c2f.seconds_total;  // every level's time
     } else {
       MatrixX3d start = garment.V;
-      if (init_model && settings.mode == SimulationMode::Static) {
+      if (init_model) {
         PatternChangeSettings change;
         change.max_displacement = settings.max_displacement;
         predictor = predict_pattern_change(*init_model, model, start, change);

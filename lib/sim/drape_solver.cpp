@@ -23,8 +23,6 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 // negligible next to any fabric stiffness (a vertex mass of 1e-5 kg against 1e2 N/m), above
 // 1e12 (h = 1 us) no step is possible and the solve has failed.
 constexpr double kMinDamping = 1e-6, kMaxDamping = 1e12;
-// Armijo sufficient-decrease constant and the smallest line-search step before giving up.
-constexpr double kArmijo = 1e-4, kMinStep = 1.0 / 1024;
 // Energy changes below this fraction of the summed magnitudes of the energy terms are
 // roundoff: near equilibrium the Armijo test cannot see them, and a full step that lowers the
 // force residual is taken instead.
@@ -39,8 +37,9 @@ constexpr double kStepAcceptance = 1e-3;
 // fewer, riskier steps).
 constexpr double kSelfContactClosing = 0.9;
 
-// x + alpha dx + alpha^2 bend over the free vertices (no bend when it is empty).
-MatrixX3d moved(const MatrixX3d& x, const VectorXd& dx, const VectorXd& bend, const std::vector<int>& free_vertices,
+} // namespace
+
+MatrixX3d moved_along(const MatrixX3d& x, const VectorXd& dx, const VectorXd& bend, const std::vector<int>& free_vertices,
                 double alpha) {
   MatrixX3d y = x;
   for (size_t a = 0; a < free_vertices.size(); ++a) {
@@ -51,7 +50,11 @@ MatrixX3d moved(const MatrixX3d& x, const VectorXd& dx, const VectorXd& bend, co
   return y;
 }
 
-} // namespace
+double residual_scale(const ClothModel& model, const ClothEnergy& energy) {
+  const double weight = energy.gravity_force().norm();
+  if (weight > 0.0) return weight;
+  return std::max(model.material.stretch_warp, model.material.stretch_weft) * std::sqrt(model.contact_area.sum());
+}
 
 DrapeSettings drape_settings(const SimulatorSettings& scene) {
   DrapeSettings s;
@@ -131,8 +134,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
 
   // Residual scale: the weight of the free cloth; without gravity, a membrane force (stretch
   // stiffness times the square root of the cloth's area).
-  double scale = energy.gravity_force().norm();
-  if (!(scale > 0.0)) scale = std::max(model.material.stretch_warp, model.material.stretch_weft) * std::sqrt(model.contact_area.sum());
+  const double scale = residual_scale(model, energy);
   const double work_scale = scale * std::max(1e-3, (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm());
 
   BisectedCholesky cholesky;
@@ -267,14 +269,14 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         stats.seconds_curvature += since(t1);
       }
       const auto t0 = Clock::now();
-      const auto along = [&](double a) { return moved(x, dx, bend, energy.free_vertices(), a); };
+      const auto along = [&](double a) { return moved_along(x, dx, bend, energy.free_vertices(), a); };
       double alpha = longest;
       MatrixX3d trial = along(alpha);
-      while (phi_only(trial) > phi + kArmijo * alpha * slope && alpha >= kMinStep) {
+      while (phi_only(trial) > phi + kLineSearchArmijo * alpha * slope && alpha >= kLineSearchMinStep) {
         alpha *= 0.5;
         trial = along(alpha);
       }
-      if (alpha < kMinStep) {  // in the roundoff regime, judge the full step by its forces
+      if (alpha < kLineSearchMinStep) {  // in the roundoff regime, judge the full step by its forces
         const EnergyTerms& e = stats.energy;
         const double magnitude = std::abs(e.membrane) + std::abs(e.bending) + std::abs(e.gravity) + std::abs(e.stitches) +
                                  std::abs(e.contact) + std::abs(e.self_contact) + std::abs(phi);
@@ -290,7 +292,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         }
       }
       stats.seconds_line_search += since(t0);
-      if (alpha < kMinStep) {  // no decrease along this direction: more damping
+      if (alpha < kLineSearchMinStep) {  // no decrease along this direction: more damping
         factor_current = false;
         damping *= 10.0;
         if (damping > kMaxDamping) return false;

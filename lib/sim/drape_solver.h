@@ -27,6 +27,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "sim/cloth_energy.h"
 
@@ -140,6 +141,19 @@ struct DrapeSettings {
 };
 
 DrapeSettings drape_settings(const SimulatorSettings& scene);
+
+// The line searches' Armijo sufficient-decrease constant and the shortest step they try.
+constexpr double kLineSearchArmijo = 1e-4, kLineSearchMinStep = 1.0 / 1024;
+
+// x + alpha dx + alpha^2 bend over the free vertices (dx, bend: 3 per free vertex; no bend
+// when it is empty).
+MatrixX3d moved_along(const MatrixX3d& x, const VectorXd& dx, const VectorXd& bend, const std::vector<int>& free_vertices,
+                double alpha);
+
+// What the relative force residual is relative to: the 2-norm of the free cloth's weight; with
+// no gravity, a membrane force (the stiffer stretch stiffness times the square root of the
+// cloth's area).
+double residual_scale(const ClothModel& model, const ClothEnergy& energy);
 
 // The relative force residual at which the solver stops: the tolerance, times
 // fast_tolerance_factor for the Fast preset.

@@ -6,12 +6,10 @@
 #include "core/error.h"
 #include "sim/bisected_cholesky.h"
 #include "sim/cloth_energy.h"
+#include "sim/drape_solver.h"
 
 namespace foldsketch {
 namespace {
-// Armijo sufficient decrease and the shortest step tried, as the drape solver's line search.
-constexpr double kArmijo = 1e-4, kMinStep = 1.0 / 1024;
-
 bool same_garment(const ClothModel& a, const ClothModel& b) {
   if (a.vertex_count != b.vertex_count || a.triangles != b.triangles || a.pins.size() != b.pins.size()) return false;
   for (size_t k = 0; k < a.pins.size(); ++k)
@@ -39,14 +37,11 @@ PatternChangeStep predict_pattern_change(const ClothModel& before, const ClothMo
   const int n = new_energy.free_count();
   if (n == 0) return done("no free vertices");
 
-  // The start's residual under its own patterns, scaled as the solver scales it (the free
-  // cloth's weight; without gravity a membrane force).
+  // The start's residual under its own patterns, scaled as the solver scales it.
   VectorXd g_old, g;
   SparseMatrix H = old_energy.pattern();
   old_energy.evaluate(step.V, &g_old, &H, HessianKind::Exact);
-  double scale = old_energy.gravity_force().norm();
-  if (!(scale > 0.0))
-    scale = std::max(before.material.stretch_warp, before.material.stretch_weft) * std::sqrt(before.contact_area.sum());
+  const double scale = residual_scale(before, old_energy);
   step.start_residual = g_old.norm() / scale;
   const double e0 = new_energy.evaluate(step.V, &g, nullptr, HessianKind::Exact).total();
   step.change_residual = g.norm() / scale;
@@ -65,12 +60,10 @@ PatternChangeStep predict_pattern_change(const ClothModel& before, const ClothMo
   }
   const double slope = g.dot(dx);
   if (!(slope < 0.0)) return done("the predicted step does not lower the energy");
-  const auto& free = new_energy.free_vertices();
-  for (double alpha = 1.0; alpha >= kMinStep; alpha *= 0.5) {
-    MatrixX3d trial = step.V;
-    for (int a = 0; a < n; ++a) trial.row(free[static_cast<size_t>(a)]) += alpha * dx.segment<3>(3 * a).transpose();
+  for (double alpha = 1.0; alpha >= kLineSearchMinStep; alpha *= 0.5) {
+    MatrixX3d trial = moved_along(step.V, dx, {}, new_energy.free_vertices(), alpha);
     const double e = new_energy.evaluate(trial, nullptr, nullptr, HessianKind::Exact).total();
-    if (std::isfinite(e) && e <= e0 + kArmijo * alpha * slope) {
+    if (std::isfinite(e) && e <= e0 + kLineSearchArmijo * alpha * slope) {
       step.V = std::move(trial);
       step.applied = true;
       step.step_fraction = alpha;
