@@ -39,6 +39,14 @@ constexpr double kSelfContactClosing = 0.9;
 
 } // namespace
 
+double longest_layer_safe_step(const ClothModel& model, const MatrixX3d& x, const VectorXd& dx,
+                               const std::vector<int>& free_vertices) {
+  if (!model.self_contact) return 1.0;
+  MatrixX3d step = MatrixX3d::Zero(x.rows(), 3);
+  for (size_t a = 0; a < free_vertices.size(); ++a) step.row(free_vertices[a]) = dx.segment<3>(3 * static_cast<Eigen::Index>(a)).transpose();
+  return self_contact_step_bound(*model.self_contact, x, step, 1.0 - kSelfContactClosing);
+}
+
 MatrixX3d moved_along(const MatrixX3d& x, const VectorXd& dx, const VectorXd& bend, const std::vector<int>& free_vertices,
                 double alpha) {
   MatrixX3d y = x;
@@ -256,12 +264,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         largest = settings.max_displacement;
       }
       // The longest step that no cloth layer passes through another on (1 without self-contact).
-      double longest = 1.0;
-      if (model.self_contact) {
-        MatrixX3d step = MatrixX3d::Zero(x.rows(), 3);
-        for (int a = 0; a < n; ++a) step.row(energy.free_vertices()[a]) = dx.segment<3>(3 * a).transpose();
-        longest = self_contact_step_bound(*model.self_contact, x, step, 1.0 - kSelfContactClosing);
-      }
+      const double longest = longest_layer_safe_step(model, x, dx, energy.free_vertices());
       VectorXd bend;  // the path's second-order part: x + alpha dx + alpha^2 bend
       if (curvature) {
         const auto t1 = Clock::now();

@@ -150,6 +150,12 @@ constexpr double kLineSearchArmijo = 1e-4, kLineSearchMinStep = 1.0 / 1024;
 MatrixX3d moved_along(const MatrixX3d& x, const VectorXd& dx, const VectorXd& bend, const std::vector<int>& free_vertices,
                 double alpha);
 
+// The longest fraction of the straight step x + alpha dx (dx: 3 per free vertex) along which
+// no cloth layer passes through another: each cloth-cloth gap closes by at most 90 % of itself
+// (self_contact_step_bound). 1 without self-contact.
+double longest_layer_safe_step(const ClothModel& model, const MatrixX3d& x, const VectorXd& dx,
+                               const std::vector<int>& free_vertices);
+
 // What the relative force residual is relative to: the 2-norm of the free cloth's weight; with
 // no gravity, a membrane force (the stiffer stretch stiffness times the square root of the
 // cloth's area).

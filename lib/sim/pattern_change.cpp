@@ -11,7 +11,9 @@
 namespace foldsketch {
 namespace {
 bool same_garment(const ClothModel& a, const ClothModel& b) {
-  if (a.vertex_count != b.vertex_count || a.triangles != b.triangles || a.pins.size() != b.pins.size()) return false;
+  if (a.vertex_count != b.vertex_count || a.triangles != b.triangles || a.pins.size() != b.pins.size() ||
+      static_cast<bool>(a.self_contact) != static_cast<bool>(b.self_contact))
+    return false;
   for (size_t k = 0; k < a.pins.size(); ++k)
     if (a.pins[k].vertex != b.pins[k].vertex || a.pins[k].position != b.pins[k].position) return false;
   return true;
@@ -32,13 +34,15 @@ PatternChangeStep predict_pattern_change(const ClothModel& before, const ClothMo
     step.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return step;
   };
-  if (after.self_contact || before.self_contact) return done("not with self-contact");
-  const ClothEnergy old_energy(before), new_energy(after);
+  ClothEnergy old_energy(before);
+  const ClothEnergy new_energy(after);
   const int n = new_energy.free_count();
   if (n == 0) return done("no free vertices");
 
-  // The start's residual under its own patterns, scaled as the solver scales it.
+  // The start's residual under its own patterns, scaled as the solver scales it (the Hessian's
+  // pattern grown for the self-contact pairs at the start first).
   VectorXd g_old, g;
+  old_energy.prepare(step.V);
   SparseMatrix H = old_energy.pattern();
   old_energy.evaluate(step.V, &g_old, &H, HessianKind::Exact);
   const double scale = residual_scale(before, old_energy);
@@ -60,7 +64,9 @@ PatternChangeStep predict_pattern_change(const ClothModel& before, const ClothMo
   }
   const double slope = g.dot(dx);
   if (!(slope < 0.0)) return done("the predicted step does not lower the energy");
-  for (double alpha = 1.0; alpha >= kLineSearchMinStep; alpha *= 0.5) {
+  // With self-contact, no further than the solver's straight steps go: no layer passes another.
+  const double longest = longest_layer_safe_step(after, step.V, dx, new_energy.free_vertices());
+  for (double alpha = longest; alpha >= kLineSearchMinStep; alpha *= 0.5) {
     MatrixX3d trial = moved_along(step.V, dx, {}, new_energy.free_vertices(), alpha);
     const double e = new_energy.evaluate(trial, nullptr, nullptr, HessianKind::Exact).total();
     if (std::isfinite(e) && e <= e0 + kLineSearchArmijo * alpha * slope) {

@@ -16,8 +16,9 @@
 // `before` (forces under `before` at most max_force_ratio of those under `after`, Hessian
 // positive definite), its
 // largest vertex move is capped as a Newton step's is (max_displacement with a body), and the
-// energy of `after` must fall along it (Armijo backtracking). Not with self-contact, whose step
-// bound holds for Newton steps only.
+// energy of `after` must fall along it (Armijo backtracking). With self-contact the step is
+// bounded as the solver's straight steps are, so that no cloth layer passes through another
+// (longest_layer_safe_step).
 #pragma once
 
 #include <string>
@@ -49,7 +50,8 @@ struct PatternChangeStep {
 };
 
 // The predicted drape for `after` from x0, an equilibrium of `before`. The two models must be
-// the same garment (vertices, triangles, pins); only the rest shapes may differ.
+// the same garment (vertices, triangles, pins, self-contact or not); only the rest shapes may
+// differ.
 PatternChangeStep predict_pattern_change(const ClothModel& before, const ClothModel& after, const MatrixX3d& x0,
                                          const PatternChangeSettings& settings = {});
 
