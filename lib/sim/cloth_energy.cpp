@@ -129,6 +129,12 @@ void ClothEnergy::build_pattern() {
 bool ClothEnergy::prepare(const MatrixX3d& x) {
   if (!model_.self_contact) return false;
   const SelfContactModel& sc = *model_.self_contact;
+  if (prepared_at_.rows() == x.rows()) {
+    double largest = 0.0;
+    for (int v : sc.vertices) largest = std::max(largest, (x.row(v) - prepared_at_.row(v)).norm());
+    if (largest <= 0.5 * (kPatternReach - 1.0) * sc.thickness) return false;
+  }
+  prepared_at_ = x;
   bool grew = false;
   const auto couple = [&](int a, int b) {  // free vertex indices
     auto& rows = neighbours_[b];
@@ -289,6 +295,11 @@ EnergyTerms ClothEnergy::evaluate(const MatrixX3d& x, VectorXd* gradient, Sparse
       // edges per vertex), so edges and vertices weigh alike.
       double area = 0.0;
       for (int v : vs) area += model_.contact_area(v) / 12.0;
+      if (energy_only) {
+        mine.self_contact +=
+            edge_edge_energy(x.row(a[0]), x.row(a[1]), x.row(b[0]), x.row(b[1]), sc->thickness, sc->stiffness * area);
+        continue;
+      }
       const Element12 e = edge_edge_penalty(x.row(a[0]), x.row(a[1]), x.row(b[0]), x.row(b[1]), sc->thickness, sc->stiffness * area,
                                             want_hessian);
       mine.self_contact += e.energy;

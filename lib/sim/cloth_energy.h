@@ -90,6 +90,11 @@ private:
   // query. A cache of certificates, not of results: any (point, distance) pair stays true.
   // Each evaluation writes only its own vertices' entries (each vertex is in one thread's share).
   mutable std::vector<Eigen::Vector4d> contact_certificates_;
+  // Self-contact: the drape at the last pattern search (prepare). The pattern then held every
+  // pair closer than kPatternReach thicknesses; a pair's distance changes by at most twice the
+  // largest vertex move, so while no vertex has moved more than (kPatternReach - 1) / 2
+  // thicknesses since, every pair in contact now is in the pattern and the search is skipped.
+  MatrixX3d prepared_at_;
   int thread_count_ = 1;  // threads per evaluation: the cores, fewer for small models
 };
 

@@ -51,9 +51,12 @@ double segment_segment_distance(const Vector3d& p0, const Vector3d& p1, const Ve
 
 // Penalty of edge (p0, p1) against edge (q0, q1), with k = stiffness times the pair's area
 // share [N/m]: E = m k/2 (t - d)^2 for segment distance d < t, with m the parallel-edge
-// mollifier. Energy, gradient and exact Hessian over (p0, p1, q0, q1).
+// mollifier. Energy, gradient and exact Hessian (when want_hessian) over (p0, p1, q0, q1).
 Element12 edge_edge_penalty(const Vector3d& p0, const Vector3d& p1, const Vector3d& q0, const Vector3d& q1, double thickness,
                             double k, bool want_hessian);
+
+// The same penalty's energy alone, without derivatives (line searches).
+double edge_edge_energy(const Vector3d& p0, const Vector3d& p1, const Vector3d& q0, const Vector3d& q1, double thickness, double k);
 
 // Penalty of vertex p against triangle (a, b, c), with k = stiffness times p's area [N/m]:
 // energy, gradient and exact Hessian over (p, a, b, c). Zero beyond the thickness.

@@ -409,6 +409,13 @@ TEST(Derivatives, EdgeEdgePenaltyForEveryFeaturePair) {
       }
     if (!stable) continue;
     ++found[static_cast<size_t>(type)];
+    // The cheaper evaluations (no Hessian; the energy alone) give the same energy and gradient.
+    const Element12 full = edge_edge_penalty(p0, p1, q0, q1, thickness, k, true);
+    const Element12 first = edge_edge_penalty(p0, p1, q0, q1, thickness, k, false);
+    EXPECT_NEAR(first.energy, full.energy, 1e-12 * std::abs(full.energy));
+    EXPECT_LE((first.gradient - full.gradient).norm(), 1e-12 * full.gradient.norm());
+    EXPECT_TRUE(first.hessian.isZero());
+    EXPECT_NEAR(edge_edge_energy(p0, p1, q0, q1, thickness, k), full.energy, 1e-9 * std::abs(full.energy)) << "case " << type;
     check_derivatives<12>(q, 1e-9, [&](const Eigen::Matrix<double, 12, 1>& y) {
       const Element12 e = edge_edge_penalty(y.segment<3>(0), y.segment<3>(3), y.segment<3>(6), y.segment<3>(9), thickness, k, true);
       return std::tuple{e.energy, e.gradient, e.hessian};
