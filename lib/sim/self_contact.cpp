@@ -11,29 +11,34 @@
 namespace foldsketch {
 namespace {
 
-using Vec12 = Eigen::Matrix<double, 12, 1>;
-using Mat12 = Eigen::Matrix<double, 12, 12>;
 
-// A value with its gradient and, when Second, its Hessian over the 12 coordinates of
-// (p, a, b, c), carried through each operation (forward differentiation). The distance formulas
-// below are short, so this costs a few thousand flops per pair with the Hessian (a few hundred
-// without) and cannot disagree with them.
+// A value with its gradient and, when Second, its Hessian over 9 variables, carried through
+// each operation (forward differentiation). The penalties depend on their four corners only
+// through three differences of them (they do not change when the pair is translated), so the
+// variables are those differences (a 9 x 9 Hessian instead of 12 x 12: half the flops), and
+// the result is lifted to the corners at the end (lift). The distance formulas below are
+// short, so this costs a few thousand flops per pair with the Hessian (a few hundred without)
+// and cannot disagree with them.
+using Vec9 = Eigen::Matrix<double, 9, 1>;
+using Mat9 = Eigen::Matrix<double, 9, 9>;
 struct NoHessian {};
 template <bool Second>
 struct Jet {
   double v = 0;
-  Vec12 g = Vec12::Zero();
-  std::conditional_t<Second, Mat12, NoHessian> H = zero();
+  Vec9 g = Vec9::Zero();
+  std::conditional_t<Second, Mat9, NoHessian> H = zero();
 
 private:
   static auto zero() {
-    if constexpr (Second) return Mat12::Zero().eval();
+    if constexpr (Second) return Mat9::Zero().eval();
     else return NoHessian{};
   }
 };
-using Hyper = Jet<true>;
 template <bool S>
 using Jet3 = std::array<Jet<S>, 3>;
+// Four corners' positions relative to one of them, as functions of the variables.
+template <bool S>
+using Corners = std::array<Jet3<S>, 4>;
 
 // Edge-edge mollifier (Li et al. 2020, Incremental Potential Contact, section 4.3): the pair's
 // energy fades smoothly to zero as the edges turn parallel, below |u x v|^2 = kMollifier |u|^2
@@ -62,7 +67,7 @@ Jet<S> operator*(const Jet<S>& a, const Jet<S>& b) {
   r.v = a.v * b.v;
   r.g = a.v * b.g + b.v * a.g;
   if constexpr (S) {
-    const Mat12 outer = a.g * b.g.transpose();
+    const Mat9 outer = a.g * b.g.transpose();
     r.H = a.v * b.H + b.v * a.H + outer + outer.transpose();
   }
   return r;
@@ -86,24 +91,24 @@ Jet<S> constant(double value) {
   r.v = value;
   return r;
 }
-template <bool S>
-Jet<S> root(const Jet<S>& a) {
-  const double r = std::sqrt(a.v);
-  return chain(a, r, 0.5 / r, -0.25 / (r * a.v));
-}
 
+// Variables 3 b .. 3 b + 2 of z, as a vector.
 template <bool S>
-Jet3<S> corner(const Vec12& q, int k) {
+Jet3<S> variable(const Vec9& z, int b) {
   Jet3<S> out;
   for (int c = 0; c < 3; ++c) {
-    out[c].v = q(3 * k + c);
-    out[c].g(3 * k + c) = 1.0;
+    out[c].v = z(3 * b + c);
+    out[c].g(3 * b + c) = 1.0;
   }
   return out;
 }
 template <bool S>
 Jet3<S> minus(const Jet3<S>& a, const Jet3<S>& b) {
   return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+template <bool S>
+Jet3<S> plus(const Jet3<S>& a, const Jet3<S>& b) {
+  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
 }
 template <bool S>
 Jet<S> dot(const Jet3<S>& a, const Jet3<S>& b) {
@@ -114,53 +119,67 @@ Jet3<S> cross(const Jet3<S>& a, const Jet3<S>& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-// Squared distance from point (corner i) to the line through corners j, k.
+// The variables as differences of the corners: variable block b = sum_k C(b, k) x_k. Lifts a
+// gradient and Hessian over them to the 12 corner coordinates (J = C (x) I3: g J, J^T H J).
+using Lift = Eigen::Matrix<double, 3, 4>;
+Eigen::Matrix<double, 9, 12> lift_matrix(const Lift& C) {
+  Eigen::Matrix<double, 9, 12> J = Eigen::Matrix<double, 9, 12>::Zero();
+  for (int b = 0; b < 3; ++b)
+    for (int k = 0; k < 4; ++k) J.block<3, 3>(3 * b, 3 * k) = C(b, k) * Eigen::Matrix3d::Identity();
+  return J;
+}
+// Edge-edge (x0, x1, x2, x3): u = x1 - x0, v = x3 - x2, w = x0 - x2.
+const Lift kEdgeEdgeLift = (Lift() << -1, 1, 0, 0, 0, 0, -1, 1, 1, 0, -1, 0).finished();
+// Point-triangle (p, a, b, c): r = p - a, e1 = b - a, e2 = c - a.
+const Lift kPointTriangleLift = (Lift() << 1, -1, 0, 0, 0, -1, 1, 0, 0, -1, 0, 1).finished();
+
+// Squared distance from corner i to the line through corners j, k.
 template <bool S>
-Jet<S> point_line_squared(const Vec12& q, int i, int j, int k) {
-  const Jet3<S> xj = corner<S>(q, j);
-  const Jet3<S> e = minus(corner<S>(q, k), xj);
-  const Jet3<S> r = cross(minus(corner<S>(q, i), xj), e);
+Jet<S> point_line_squared(const Corners<S>& X, int i, int j, int k) {
+  const Jet3<S> e = minus(X[k], X[j]);
+  const Jet3<S> r = cross(minus(X[i], X[j]), e);
   return dot(r, r) * reciprocal(dot(e, e));
 }
 
-// Squared distance from p (corner 0) to the given feature of triangle (corners 1, 2, 3):
-// each formula is smooth inside its feature's region, and they agree to first order where
-// regions meet.
-Hyper squared_distance(const Vec12& q, int feature) {
-  const Jet3<true> p = corner<true>(q, 0);
+// Squared distance from p to the given feature of triangle (a, b, c), with its gradient and
+// Hessian over (p - a, b - a, c - a): each formula is smooth inside its feature's region, and
+// they agree to first order where regions meet.
+Jet<true> squared_distance(const Vec9& z, int feature) {
+  const Jet3<true> zero{};
+  const Corners<true> X{variable<true>(z, 0), zero, variable<true>(z, 1), variable<true>(z, 2)};
   if (feature == 0) {  // face: ((p - a).n)^2 / |n|^2
-    const Jet3<true> a = corner<true>(q, 1);
-    const Jet3<true> n = cross(minus(corner<true>(q, 2), a), minus(corner<true>(q, 3), a));
-    const Hyper h = dot(minus(p, a), n);
+    const Jet3<true> n = cross(X[2], X[3]);
+    const Jet<true> h = dot(X[0], n);
     return h * h * reciprocal(dot(n, n));
   }
-  if (feature <= 3) return point_line_squared<true>(q, 0, feature, feature % 3 + 1);  // edge
-  const Jet3<true> r = minus(p, corner<true>(q, feature - 3));                       // corner
-  return dot(r, r);
+  if (feature <= 3) return point_line_squared<true>(X, 0, feature, feature % 3 + 1);  // edge
+  return dot(minus(X[0], X[feature - 3]), minus(X[0], X[feature - 3]));                // corner
 }
 
-// The edge-edge penalty with its gradient and, when S, its Hessian (edge_edge_penalty).
+// The edge-edge penalty with its gradient and, when S, its Hessian over (u, v, w)
+// (edge_edge_penalty).
 template <bool S>
-Jet<S> edge_edge_jet(const Vec12& q, const SegmentClosestPoints& closest, double thickness, double k) {
+Jet<S> edge_edge_jet(const Vec9& z, const SegmentClosestPoints& closest, double thickness, double k) {
   // The squared distance by the formula of the closest points' features: interior-interior is
   // the distance between the lines, an end against the other edge's interior is point-line,
   // two ends point-point. They agree to first order where the features change.
   const bool s_inside = closest.s > 0.0 && closest.s < 1.0, t_inside = closest.t > 0.0 && closest.t < 1.0;
   const int p_end = closest.s <= 0.0 ? 0 : 1, q_end = closest.t <= 0.0 ? 2 : 3;
-  const Jet3<S> u = minus(corner<S>(q, 1), corner<S>(q, 0)), v = minus(corner<S>(q, 3), corner<S>(q, 2));
+  const Jet3<S> u = variable<S>(z, 0), v = variable<S>(z, 1), w = variable<S>(z, 2);
+  const Corners<S> X{w, plus(w, u), Jet3<S>{}, v};  // relative to x2
   std::optional<Jet<S>> skew;  // |u x v|^2, when the case needs it
   Jet<S> squared;
   if (s_inside && t_inside) {
     const Jet3<S> n = cross(u, v);
     skew = dot(n, n);
-    const Jet<S> h = dot(minus(corner<S>(q, 0), corner<S>(q, 2)), n);
+    const Jet<S> h = dot(w, n);
     squared = h * h * reciprocal(*skew);
   } else if (t_inside) {
-    squared = point_line_squared<S>(q, p_end, 2, 3);
+    squared = point_line_squared<S>(X, p_end, 2, 3);
   } else if (s_inside) {
-    squared = point_line_squared<S>(q, q_end, 0, 1);
+    squared = point_line_squared<S>(X, q_end, 0, 1);
   } else {
-    const Jet3<S> r = minus(corner<S>(q, p_end), corner<S>(q, q_end));
+    const Jet3<S> r = minus(X[p_end], X[q_end]);
     squared = dot(r, r);
   }
   // E = k/2 (t - d)^2, d = sqrt(squared): E'(s) = -k (t - d) / (2 d), E''(s) = k t / (4 d^3).
@@ -168,7 +187,7 @@ Jet<S> edge_edge_jet(const Vec12& q, const SegmentClosestPoints& closest, double
   Jet<S> energy = chain(squared, 0.5 * k * (thickness - d) * (thickness - d), -k * (thickness - d) / (2.0 * d),
                         k * thickness / (4.0 * d * d * d));
   // The mollifier, where the edges are nearly parallel (judged in plain numbers first).
-  const Vector3d pu = q.segment<3>(3) - q.segment<3>(0), pv = q.segment<3>(9) - q.segment<3>(6);
+  const Vector3d pu = z.segment<3>(0), pv = z.segment<3>(3);
   if (pu.cross(pv).squaredNorm() < kMollifier * pu.squaredNorm() * pv.squaredNorm()) {
     if (!skew) {
       const Jet3<S> n = cross(u, v);
@@ -301,17 +320,18 @@ Element12 edge_edge_penalty(const Vector3d& p0, const Vector3d& p1, const Vector
   out.hessian.setZero();
   const SegmentClosestPoints closest = segment_closest_parameters(p0, p1, q0, q1);
   if (!(closest.distance < thickness) || !(closest.distance > 0.0)) return out;
-  Vec12 q;
-  q << p0, p1, q0, q1;
+  Vec9 z;
+  z << p1 - p0, q1 - q0, p0 - q0;
+  static const Eigen::Matrix<double, 9, 12> J = lift_matrix(kEdgeEdgeLift);
   if (want_hessian) {
-    const Hyper e = edge_edge_jet<true>(q, closest, thickness, k);
+    const Jet<true> e = edge_edge_jet<true>(z, closest, thickness, k);
     out.energy = e.v;
-    out.gradient = e.g;
-    out.hessian = e.H;
+    out.gradient = J.transpose() * e.g;
+    out.hessian = J.transpose() * e.H * J;
   } else {
-    const Jet<false> e = edge_edge_jet<false>(q, closest, thickness, k);
+    const Jet<false> e = edge_edge_jet<false>(z, closest, thickness, k);
     out.energy = e.v;
-    out.gradient = e.g;
+    out.gradient = J.transpose() * e.g;
   }
   return out;
 }
@@ -343,11 +363,13 @@ Element12 point_triangle_penalty(const Vector3d& p, const Vector3d& a, const Vec
   out.gradient << n, -w(0) * n, -w(1) * n, -w(2) * n;
   out.gradient *= -k * (thickness - d);
   if (want_hessian) {
-    Vec12 q;
-    q << p, a, b, c;
-    const Hyper s = squared_distance(q, closest.feature);
+    Vec9 z;
+    z << p - a, b - a, c - a;
+    static const Eigen::Matrix<double, 9, 12> J = lift_matrix(kPointTriangleLift);
+    const Jet<true> s = squared_distance(z, closest.feature);
     // d = sqrt(s), E = k/2 (t - d)^2: E'(s) = -k (t - d) / (2 d), E''(s) = k t / (4 d^3).
-    out.hessian = -k * (thickness - d) / (2.0 * d) * s.H + k * thickness / (4.0 * d * d * d) * s.g * s.g.transpose();
+    const Mat9 H = -k * (thickness - d) / (2.0 * d) * s.H + k * thickness / (4.0 * d * d * d) * s.g * s.g.transpose();
+    out.hessian = J.transpose() * H * J;
   }
   return out;
 }
