@@ -33,6 +33,9 @@ SqueezedSheet squeezed_sheet(double squeeze) {
 // to outweigh their negative curvature, which shortens every vertex's step: measured, the
 // exact Hessian alone was still at relative residual 8 after 1000 iterations, while the
 // fallback to projected membrane elements converged in 65 (66 with the Laplacian metric).
+// That count is one path of many: with OpenBLAS's SkylakeX kernels instead of Haswell's (as
+// when OPENBLAS_CORETYPE is unset on this machine) the roundoff differs and it took 117. So
+// both solves get the same budget, and the test asks that only the fallback converges in it.
 TEST(DrapeSolver, MembraneFallbackKeepsCompressionFromLockingTheDamping) {
   const SqueezedSheet s = squeezed_sheet(0.6);
   DrapeSettings exact_only;
@@ -42,10 +45,11 @@ TEST(DrapeSolver, MembraneFallbackKeepsCompressionFromLockingTheDamping) {
   const DrapeResult locked = solve_drape(s.model, s.garment.V, exact_only);
   EXPECT_FALSE(locked.stats.converged) << "the exact Hessian alone converged: the case no longer tests the fallback";
   EXPECT_EQ(locked.stats.projected_iterations, 0);
-  const DrapeResult r = solve_drape(s.model, s.garment.V, DrapeSettings{});
+  DrapeSettings with_fallback;
+  with_fallback.max_steps = exact_only.max_steps;
+  const DrapeResult r = solve_drape(s.model, s.garment.V, with_fallback);
   ASSERT_TRUE(r.stats.converged) << r.stats.message;
   EXPECT_LE(r.stats.residual, 1e-6);
-  EXPECT_LE(r.stats.newton_iterations, 100);
   EXPECT_GT(r.stats.projected_iterations, 0);
   EXPECT_TRUE(r.V.allFinite());
 }
