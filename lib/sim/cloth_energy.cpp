@@ -9,6 +9,8 @@
 #include <thread>
 #include <utility>
 
+#include <Eigen/Eigenvalues>
+
 #include "core/error.h"
 #include "sim/bending.h"
 #include "sim/self_contact.h"
@@ -410,9 +412,10 @@ void ClothEnergy::add_mass(SparseMatrix& A, double lambda) const {
   }
 }
 
-void ClothEnergy::add_laplacian(SparseMatrix& A, double mu) const {
+void ClothEnergy::add_laplacian(SparseMatrix& A, double mu_all, const VectorXd* weights) const {
   double* values = A.valuePtr();
   for (size_t t = 0; t < laplacians_.size(); ++t) {
+    const double mu = weights ? mu_all * (*weights)(static_cast<Eigen::Index>(t)) : mu_all;
     const auto& blocks = triangle_blocks_[t];
     for (int j = 0; j < 3; ++j)
       for (int i = 0; i < 3; ++i) {
@@ -439,18 +442,30 @@ SparseMatrix ClothEnergy::scalar_laplacian() const {
   return L;
 }
 
-VectorXd ClothEnergy::laplacian_times(const VectorXd& d) const {
+VectorXd ClothEnergy::laplacian_times(const VectorXd& d, const VectorXd* weights) const {
   VectorXd y = VectorXd::Zero(d.size());
   for (size_t t = 0; t < laplacians_.size(); ++t) {
     const auto& v = model_.triangles[t];
+    const double w = weights ? (*weights)(static_cast<Eigen::Index>(t)) : 1.0;
     for (int i = 0; i < 3; ++i) {
       const int a = free_index_[v[i]];
       if (a < 0) continue;
       for (int j = 0; j < 3; ++j)
-        if (const int b = free_index_[v[j]]; b >= 0) y.segment<3>(3 * a) += laplacians_[t](i, j) * d.segment<3>(3 * b);
+        if (const int b = free_index_[v[j]]; b >= 0) y.segment<3>(3 * a) += w * laplacians_[t](i, j) * d.segment<3>(3 * b);
     }
   }
   return y;
+}
+
+VectorXd ClothEnergy::compressive_stress(const MatrixX3d& x) const {
+  VectorXd c(static_cast<Eigen::Index>(model_.triangles.size()));
+  for (size_t t = 0; t < model_.triangles.size(); ++t) {
+    const auto& v = model_.triangles[t];
+    const Eigen::Matrix2d S = membrane_stress(x.row(v[0]), x.row(v[1]), x.row(v[2]), model_.rest[t], model_.stiffness);
+    const double least = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(S, Eigen::EigenvaluesOnly).eigenvalues()(0);
+    c(static_cast<Eigen::Index>(t)) = std::max(0.0, -least);
+  }
+  return c;
 }
 
 } // namespace foldsketch

@@ -60,8 +60,13 @@ public:
   // The rest-shape Laplacian L (the sum over triangles of A grad N_i . grad N_j over the
   // pattern triangle, dimensionless, positive semi-definite), acting on each coordinate:
   // add mu * L to a matrix with this pattern, or give L d for free-DOF displacements d.
-  void add_laplacian(SparseMatrix& A, double mu) const;
-  VectorXd laplacian_times(const VectorXd& d) const;
+  // With `weights` (one per triangle), each triangle's term scaled by its weight.
+  void add_laplacian(SparseMatrix& A, double mu, const VectorXd* weights = nullptr) const;
+  VectorXd laplacian_times(const VectorXd& d, const VectorXd* weights = nullptr) const;
+  // Per triangle, the most compressive principal membrane stress at drape x, as a positive
+  // number [N/m] (0 where the triangle is not compressed): the membrane's geometric stiffness
+  // A B^T S B is at least minus this times the triangle's Laplacian term.
+  VectorXd compressive_stress(const MatrixX3d& x) const;
   // The same L over the free vertices, one unknown per vertex (free_count square).
   SparseMatrix scalar_laplacian() const;
 

@@ -135,4 +135,11 @@ Element9 membrane_element(const Vector3d& x0, const Vector3d& x1, const Vector3d
   return out;
 }
 
+Eigen::Matrix2d membrane_stress(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest,
+                                const MembraneStiffness& k) {
+  const Eigen::Vector3d e = green_strain(x0, x1, x2, rest);
+  const Eigen::Matrix2d E = (Eigen::Matrix2d() << e(0), e(2), e(2), e(1)).finished();
+  return stress(E, active(k, E));
+}
+
 } // namespace foldsketch

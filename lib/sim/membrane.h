@@ -57,6 +57,10 @@ Element9 membrane_element(const Vector3d& x0, const Vector3d& x1, const Vector3d
 double membrane_energy(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest,
                        const MembraneStiffness& k);
 
+// Second Piola-Kirchhoff stress [N/m] of the triangle at drape x, in the pattern frame.
+Eigen::Matrix2d membrane_stress(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest,
+                                const MembraneStiffness& k);
+
 // Green strain (xx, yy, xy) of the triangle in the pattern frame.
 Eigen::Vector3d green_strain(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest);
 
