@@ -142,6 +142,10 @@ int main(int argc, char** argv) {
   bool straight_steps = false;
   app.add_flag("--straight-steps", straight_steps,
                "line-search along the straight Newton step instead of the curved one (for measurements)");
+  bool plain_metric = false;
+  app.add_flag("--plain-metric", plain_metric,
+               "damp the static steps by the pattern's plain Laplacian instead of one weighted by each triangle's "
+               "compressive stress (DrapeSettings::stress_metric_reference; for measurements)");
   std::string membrane_hessian;
   app.add_option("--membrane-hessian", membrane_hessian, "accurate preset's triangle Hessian (for measurements)")
       ->check(CLI::IsMember({"projected", "gauss-newton", "exact"}));
@@ -210,6 +214,7 @@ int main(int argc, char** argv) {
       settings.bending_hessian = hessian_kind(bending_hessian);
     if (!membrane_hessian.empty()) settings.membrane_hessian = hessian_kind(membrane_hessian);
     if (straight_steps) settings.curved_steps = false;
+    if (plain_metric) settings.stress_metric_reference = 0.0;
     const bool terminal = ::isatty(STDERR_FILENO);
     const DrapeProgress progress = [&](const DrapeStats& s, const MatrixX3d& x) {
       if (trace)

@@ -163,6 +163,10 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   const bool laplacian_metric = !dynamic && settings.proximal_metric == ProximalMetric::Laplacian;
   const double metric_mass = laplacian_metric ? settings.laplacian_mass_share : 1.0;
   const double metric_laplacian = laplacian_metric && n > 0 ? mass.sum() / (3.0 * n) : 0.0;
+  // Not with self-contact (DrapeSettings::stress_metric_reference).
+  const bool stress_metric = laplacian_metric && settings.stress_metric_reference > 0.0 && !model.self_contact;
+  VectorXd metric_weights;  // per triangle (DrapeSettings::stress_metric_reference)
+  const VectorXd* weights = nullptr;
   // Dynamic mode adds the drag potential drag/(2h) |y - x_n|^2_M (force -drag M v_{n+1}).
   const auto inertia = [&](const MatrixX3d& y, VectorXd* grad) {
     double value = 0.0;
@@ -173,7 +177,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         const int v = energy.free_vertices()[a];
         d.segment<3>(3 * a) = (y.row(v) - x_step.row(v)).transpose();
       }
-      const VectorXd force = damping * (metric_laplacian * energy.laplacian_times(d) + metric_mass * mass.cwiseProduct(d));
+      const VectorXd force = damping * (metric_laplacian * energy.laplacian_times(d, weights) + metric_mass * mass.cwiseProduct(d));
       if (grad) *grad += force;
       return 0.5 * d.dot(force);
     }
@@ -231,7 +235,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
       if (!factor_current) {
         const double mass_term = damping + (dynamic ? settings.drag / h : 0.0);
         energy.add_mass(A, metric_mass * (mass_term - applied_damping));
-        if (laplacian_metric) energy.add_laplacian(A, metric_laplacian * (mass_term - applied_damping));
+        if (laplacian_metric) energy.add_laplacian(A, metric_laplacian * (mass_term - applied_damping), weights);
         applied_damping = mass_term;
         factor_current = cholesky.factorize(A);
         if (!factor_current && fallback_allowed && membrane_now == HessianKind::Exact) {
@@ -346,6 +350,11 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
     }
 
     x_step = x;
+    if (stress_metric) {
+      metric_weights = energy.compressive_stress(x) / settings.stress_metric_reference;
+      metric_weights.array() += settings.stress_metric_floor;
+      weights = &metric_weights;
+    }
     if (!dynamic) {
       // At the start of a quasi-static step x = x_n, so Phi(x) = E(x), evaluated just above.
       if (!newton_iteration(g, stats.energy.total())) {

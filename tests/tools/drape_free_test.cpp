@@ -109,6 +109,17 @@ TEST(DrapeFree, ReDrapeStartsFromThePredictedResponseToThePatternChange) {
         "assert d['converged'] and 'predictor' not in d and d['newton_iterations'] == 0, d");
 }
 
+// --plain-metric, a measurement switch, damps by the plain Laplacian instead of the
+// stress-weighted one: the flag drapes to equilibrium both ways, on paths of their own.
+TEST(DrapeFree, PlainMetricIsAMeasurementSwitch) {
+  const std::string folder = make_sample_folder("flag", 600);
+  const std::string converged = "assert d['converged'] and d['residual'] <= 1e-6, d";
+  expect_drape(folder, "", converged);
+  const Garment weighted = read_garment(folder + "/draped.obj");
+  expect_drape(folder, "--plain-metric", converged);
+  EXPECT_NE(read_garment(folder + "/draped.obj").V, weighted.V) << "the switch changed nothing";
+}
+
 // The scene switch for self-contact reaches the engine: the flag drapes with it on, and the
 // report names the term.
 TEST(DrapeFree, SelfContactIsASceneSwitch) {
