@@ -161,6 +161,9 @@ int main(int argc, char** argv) {
   bool trace = false, no_reference = false, straight_steps = false, no_predictor = false;
   double time_step = DrapeSettings{}.time_step;
   std::string metric = "laplacian";
+  double fallback_stretch = DrapeSettings{}.membrane_fallback_stretch;
+  int fallback_iterations = DrapeSettings{}.membrane_fallback_iterations;
+  std::vector<double> stress_metric;
   std::vector<double> perturbations;
   std::string warm_from = "bench/starts", write_starts;
   int start_count = 3;
@@ -189,6 +192,20 @@ int main(int argc, char** argv) {
                  "what the damping of the static steps measures a step by (DrapeSettings::proximal_metric): laplacian "
                  "(the default), or mass (the quasi-static backward-Euler step), for the timed and the reference drapes")
       ->check(CLI::IsMember({"laplacian", "mass"}));
+  app.add_option("--fallback-stretch", fallback_stretch,
+                 "the projected-membrane fallback acts on starts with some triangle squeezed below this "
+                 "(DrapeSettings::membrane_fallback_stretch; above 1: every start)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--fallback-iterations", fallback_iterations,
+                 "iterations a fallback to projected membranes lasts (DrapeSettings::membrane_fallback_iterations)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--stress-metric", stress_metric,
+                 "FLOOR,REFERENCE: weight each triangle's term of the Laplacian metric by FLOOR + its compressive stress "
+                 "/ REFERENCE [N/m] (DrapeSettings::stress_metric_floor, stress_metric_reference)")
+      ->delimiter(',')
+      ->expected(2);
   app.add_flag("--no-predictor", no_predictor,
                "warm rows: start the re-drape (and its reference) from the stored start itself, not from the pattern-change "
                "predictor's step (lib/sim/pattern_change.h), as before the predictor");
@@ -237,6 +254,9 @@ int main(int argc, char** argv) {
   DrapeSettings defaults;  // what every drape here starts from
   defaults.proximal_metric = metric == "mass" ? ProximalMetric::Mass : ProximalMetric::Laplacian;
   defaults.curved_steps = !straight_steps;
+  defaults.membrane_fallback_stretch = fallback_stretch;
+  defaults.membrane_fallback_iterations = fallback_iterations;
+  if (stress_metric.size() == 2) defaults.stress_metric_floor = stress_metric[0], defaults.stress_metric_reference = stress_metric[1];
   const DrapeProgress tracer = [](const DrapeStats& s, const MatrixX3d&) {
     std::fprintf(stderr, "%5d factorisations %5d residual %.3e step %.3f length %.2e damping %.1e\n", s.newton_iterations,
                  s.factorizations, s.residual, s.step_fraction, s.step_length, s.damping);
@@ -266,7 +286,7 @@ int main(int argc, char** argv) {
   if (warm && !warm_csv_path.empty()) (warm_csv.open(warm_csv_path), warm_csv << header);
   std::ofstream trajectory;
   if (!trajectory_path.empty())
-    (trajectory.open(trajectory_path), trajectory << "start,triangles,preset,newton_iterations,seconds,residual,mean_error_mm,max_error_mm\n");
+    (trajectory.open(trajectory_path), trajectory << "start,triangles,preset,newton_iterations,seconds,residual,mean_error_mm,max_error_mm,mean_move_mm,damping,step_fraction\n");
   std::vector<Row> rows;
   // What every timed drape (and the perturbed ones) solves with.
   const auto timed_settings = [&](SolverPreset preset) {
@@ -314,16 +334,20 @@ int main(int argc, char** argv) {
         int iterations;
         double seconds, residual;
         ErrorMm error;
+        double move = 0, damping = 0, fraction = 0;  // the step's mean vertex move [mm], damping, fraction
       };
       std::vector<Point> along;
       const bool follow = reference && trajectory.is_open() && follow_trajectory;
       for (int r = 0; r < runs; ++r) {
         if (follow) along.assign(1, {0, head_start, std::numeric_limits<double>::quiet_NaN(), error_mm(start, reference->V)});
+        MatrixX3d previous = start;
         const bool last = r + 1 == runs;
         result = solve_drape(model, start, settings, [&](const DrapeStats& s, const MatrixX3d& x) {
           if (trace) tracer(s, x);
           if (!follow || !last) return;
-          along.push_back({s.newton_iterations, head_start + s.seconds_total, s.residual, error_mm(x, reference->V)});
+          along.push_back({s.newton_iterations, head_start + s.seconds_total, s.residual, error_mm(x, reference->V),
+                           error_mm(x, previous).mean, s.damping, s.step_fraction});
+          previous = x;
         });
         seconds.push_back(head_start + result.stats.seconds_total);
       }
@@ -337,7 +361,7 @@ int main(int argc, char** argv) {
           trajectory << start_name << ',' << model.triangles.size() << ',' << to_string(preset) << ',' << p.iterations << ','
                      << p.seconds << ',';
           if (std::isfinite(p.residual)) trajectory << p.residual;
-          trajectory << ',' << p.error.mean << ',' << p.error.max << '\n';
+          trajectory << ',' << p.error.mean << ',' << p.error.max << ',' << p.move << ',' << p.damping << ',' << p.fraction << '\n';
         }
         // The first moment the error fell to each bound (it may rise again later).
         std::printf("%9s along the solve: start %.2f mm mean, %.2f mm max", "", along.front().error.mean, along.front().error.max);
@@ -517,7 +541,8 @@ int main(int argc, char** argv) {
         std::optional<DrapeResult> wider_reference;
         if (!no_reference) wider_reference = solve_drape(wider_model, predicted.V, reference_settings);
         // Only the first start's solves go to the trajectory CSV (one line per size in the plot).
-        const Timed timed = time_presets("warm", wider_model, predicted.V, wider_reference ? &*wider_reference : nullptr, i == 0,
+        const std::string warm_name = i == 0 ? "warm" : "warm" + std::to_string(i + 1);
+        const Timed timed = time_presets(warm_name.c_str(), wider_model, predicted.V, wider_reference ? &*wider_reference : nullptr, true,
                                          predicted.seconds);
         if (wider_reference) {
           start_errors.push_back(error_mm(start, wider_reference->V));
