@@ -310,7 +310,7 @@ int main(int argc, char** argv) {
     if (s.converged) rows.push_back({start_name, preset, static_cast<double>(triangles), s.seconds, s.iterations});
   };
   // Both presets from `start`, each timed `runs` times, against `reference` (none: null); prints
-  // a row per preset, and with `follow` writes the last run's error along the solve to the
+  // a row per preset, and with a reference and --trajectory writes the last run's error along the solve to the
   // trajectory CSV. Returns the presets' summaries and the last accurate drape (or the last drape).
   struct Timed {
     std::vector<std::pair<std::string, Summary>> presets;
@@ -319,7 +319,7 @@ int main(int argc, char** argv) {
   // `head_start` [s]: time spent before the solve on making `start` (the pattern-change
   // predictor's), added to every run's and every trajectory point's time.
   const auto time_presets = [&](const char* start_name, const ClothModel& model, const MatrixX3d& start,
-                                const DrapeResult* reference, bool follow_trajectory, double head_start = 0.0) {
+                                const DrapeResult* reference, double head_start = 0.0) {
     Timed timed{{}, start};
     bool have_accurate = false;
     for (const SolverPreset preset : {SolverPreset::Accurate, SolverPreset::Fast}) {
@@ -337,7 +337,7 @@ int main(int argc, char** argv) {
         double move = 0, damping = 0, fraction = 0;  // the step's mean vertex move [mm], damping, fraction
       };
       std::vector<Point> along;
-      const bool follow = reference && trajectory.is_open() && follow_trajectory;
+      const bool follow = reference && trajectory.is_open();
       for (int r = 0; r < runs; ++r) {
         if (follow) along.assign(1, {0, head_start, std::numeric_limits<double>::quiet_NaN(), error_mm(start, reference->V)});
         MatrixX3d previous = start;
@@ -501,7 +501,7 @@ int main(int argc, char** argv) {
     MatrixX3d previous = reference ? reference->V : MatrixX3d();
     if (cold) {
       table_header("cold start: from the sewn placement");
-      const Timed timed = time_presets("cold", model, sample.garment.V, reference ? &*reference : nullptr, true);
+      const Timed timed = time_presets("cold", model, sample.garment.V, reference ? &*reference : nullptr);
       for (const auto& [preset, row] : timed.presets) record("cold", triangles, preset, row, csv);
       if (!reference) previous = timed.drape;
       if (reference) perturb_start(model, sample.garment.V, *reference);
@@ -540,9 +540,9 @@ int main(int argc, char** argv) {
         }
         std::optional<DrapeResult> wider_reference;
         if (!no_reference) wider_reference = solve_drape(wider_model, predicted.V, reference_settings);
-        // Only the first start's solves go to the trajectory CSV (one line per size in the plot).
+        // Every start's solves go to the trajectory CSV, as warm, warm2, warm3 (the plot draws warm).
         const std::string warm_name = i == 0 ? "warm" : "warm" + std::to_string(i + 1);
-        const Timed timed = time_presets(warm_name.c_str(), wider_model, predicted.V, wider_reference ? &*wider_reference : nullptr, true,
+        const Timed timed = time_presets(warm_name.c_str(), wider_model, predicted.V, wider_reference ? &*wider_reference : nullptr,
                                          predicted.seconds);
         if (wider_reference) {
           start_errors.push_back(error_mm(start, wider_reference->V));

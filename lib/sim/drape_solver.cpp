@@ -165,8 +165,8 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   const double metric_laplacian = laplacian_metric && n > 0 ? mass.sum() / (3.0 * n) : 0.0;
   // Not with self-contact (DrapeSettings::stress_metric_reference).
   const bool stress_metric = laplacian_metric && settings.stress_metric_reference > 0.0 && !model.self_contact;
-  VectorXd metric_weights;  // per triangle (DrapeSettings::stress_metric_reference)
-  const VectorXd* weights = nullptr;
+  VectorXd metric_weights;  // per triangle, set at each step's start (DrapeSettings::stress_metric_reference)
+  const VectorXd* const weights = stress_metric ? &metric_weights : nullptr;
   // Dynamic mode adds the drag potential drag/(2h) |y - x_n|^2_M (force -drag M v_{n+1}).
   const auto inertia = [&](const MatrixX3d& y, VectorXd* grad) {
     double value = 0.0;
@@ -353,7 +353,6 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
     if (stress_metric) {
       metric_weights = energy.compressive_stress(x) / settings.stress_metric_reference;
       metric_weights.array() += settings.stress_metric_floor;
-      weights = &metric_weights;
     }
     if (!dynamic) {
       // At the start of a quasi-static step x = x_n, so Phi(x) = E(x), evaluated just above.

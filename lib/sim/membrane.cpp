@@ -62,11 +62,13 @@ Matrix32 deformation(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2,
   Ds.col(1) = x2 - x0;
   return Ds * rest.Dm_inverse;
 }
+
+// Green strain E = (F^T F - I) / 2 of deformation gradient F.
+Eigen::Matrix2d strain_of(const Matrix32& F) { return 0.5 * (F.transpose() * F - Eigen::Matrix2d::Identity()); }
 } // namespace
 
 Eigen::Vector3d green_strain(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest) {
-  const Matrix32 F = deformation(x0, x1, x2, rest);
-  const Eigen::Matrix2d E = 0.5 * (F.transpose() * F - Eigen::Matrix2d::Identity());
+  const Eigen::Matrix2d E = strain_of(deformation(x0, x1, x2, rest));
   return {E(0, 0), E(1, 1), E(0, 1)};
 }
 
@@ -80,15 +82,14 @@ double strain_energy(const Eigen::Matrix2d& E, const MembraneStiffness& k, doubl
 
 double membrane_energy(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest,
                        const MembraneStiffness& stiffness) {
-  const Matrix32 F = deformation(x0, x1, x2, rest);
-  const Eigen::Matrix2d E = 0.5 * (F.transpose() * F - Eigen::Matrix2d::Identity());
+  const Eigen::Matrix2d E = strain_of(deformation(x0, x1, x2, rest));
   return strain_energy(E, active(stiffness, E), rest.area);
 }
 
 Element9 membrane_element(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest,
                           const MembraneStiffness& stiffness, bool want_hessian, HessianKind kind) {
   const Matrix32 F = deformation(x0, x1, x2, rest);
-  const Eigen::Matrix2d E = 0.5 * (F.transpose() * F - Eigen::Matrix2d::Identity());
+  const Eigen::Matrix2d E = strain_of(F);
   // Piecewise quadratic in each normal strain: C1 energy, exact Hessian away from E = 0.
   const MembraneStiffness k = active(stiffness, E);
   const Eigen::Matrix2d S = stress(E, k);
@@ -137,8 +138,7 @@ Element9 membrane_element(const Vector3d& x0, const Vector3d& x1, const Vector3d
 
 Eigen::Matrix2d membrane_stress(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest,
                                 const MembraneStiffness& k) {
-  const Eigen::Vector3d e = green_strain(x0, x1, x2, rest);
-  const Eigen::Matrix2d E = (Eigen::Matrix2d() << e(0), e(2), e(2), e(1)).finished();
+  const Eigen::Matrix2d E = strain_of(deformation(x0, x1, x2, rest));
   return stress(E, active(k, E));
 }
 
