@@ -3,12 +3,13 @@
 // the level before (carried over by transfer_drape), the garment's own mesh last.
 //
 // Why: a cold drape (from a placement) spends most of its Newton iterations forming folds (the
-// 20K skirt's mean distance to its end is still 2 mm after 510 of 599 iterations,
+// 20K grid skirt's mean distance to its end is still 2 mm after 289 of 363 iterations,
 // bench/drape_bench.txt), and on a coarse mesh an iteration costs a fraction. The fine level
 // then starts from the coarse folds. Measured on the benchmark skirt, 3 paths each (bench/
-// drape_bench.txt): 2.2 and 2.3 times faster at 20K and 54K triangles on its grid mesh, 1.5 and
-// 1.2 times at 10K and 20K on its isotropic mesh, but 2 times slower at 10K on the grid. What
-// limits it: the fine level still takes 200-400 Newton iterations, because carrying a drape
+// drape_bench.txt, session 31): on its isotropic mesh (the samples' meshing) 1.1 and 2.2 times
+// faster at 10K and 20K triangles and 1.5 times at 54K (one path); on its grid mesh, where the stress-weighted step
+// metric made the plain cold drapes short, 1.5 times faster at 20K but 2.9 and 1.6 times slower
+// at 10K and 54K. What limits it: the fine level still takes 220-550 Newton iterations, because carrying a drape
 // to a coarse mesh and back squeezes the fine triangles that straddle coarse creases, and
 // repairing that alone took 100-200 iterations even from the finished drape. Not for
 // re-drapes: a start that already holds the fine drape's folds would lose them on the coarse
