@@ -164,9 +164,9 @@ int main(int argc, char** argv) {
   app.add_flag("--coarse-to-fine", coarse_to_fine,
                "for a cold drape (from a placement): drape the patterns remeshed coarser first (a quarter of the "
                "triangles per level, none under 2000), each level from the one before, the garment's own mesh last. "
-               "Measured on the benchmark skirt (bench/drape_bench.txt): on the samples' isotropic meshing 1.1 times "
-               "faster at 10K triangles and 2.2 times at 20K and 1.5 times at 54K (one path); on a grid mesh 1.5 times faster at 20K but 2.9 "
-               "times slower at 10K and 1.6 times slower at 54K. It ends in another "
+               "Measured on the benchmark skirt (bench/drape_bench.txt): on the samples' isotropic meshing 1.1, "
+               "2.2 and 1.5 times faster at 10K, 20K and 54K triangles (54K one path); on a grid mesh 1.5 times "
+               "faster at 20K but 2.9 and 1.6 times slower at 10K and 54K. It ends in another "
                "equilibrium, with other folds, than the plain drape (12-18 mm mean apart on the isotropic skirt at "
                "10K and 20K, whose plain drape moves under 1 mm when its start moves by 1 um). Not for re-drapes: "
                "the coarse levels lose the start's folds. Not with self-contact or explicit stitches")

@@ -7,13 +7,13 @@
 // bench/drape_bench.txt), and on a coarse mesh an iteration costs a fraction. The fine level
 // then starts from the coarse folds. Measured on the benchmark skirt, 3 paths each (bench/
 // drape_bench.txt, session 31): on its isotropic mesh (the samples' meshing) 1.1 and 2.2 times
-// faster at 10K and 20K triangles and 1.5 times at 54K (one path); on its grid mesh, where the stress-weighted step
-// metric made the plain cold drapes short, 1.5 times faster at 20K but 2.9 and 1.6 times slower
-// at 10K and 54K. What limits it: the fine level still takes 220-550 Newton iterations, because carrying a drape
-// to a coarse mesh and back squeezes the fine triangles that straddle coarse creases, and
-// repairing that alone took 100-200 iterations even from the finished drape. Not for
-// re-drapes: a start that already holds the fine drape's folds would lose them on the coarse
-// level.
+// faster at 10K and 20K triangles and 1.5 times at 54K (one path); on its grid mesh, where the
+// stress-weighted step metric made the plain cold drapes short, 1.5 times faster at 20K but 2.9
+// and 1.6 times slower at 10K and 54K. What limits it: the fine level still takes 220-550
+// Newton iterations, because carrying a drape to a coarse mesh and back squeezes the fine
+// triangles that straddle coarse creases, and repairing that alone took 100-200 iterations even
+// from the finished drape. Not for re-drapes: a start that already holds the fine drape's folds
+// would lose them on the coarse level.
 //
 // Every level after the first runs without the membrane fallback (DrapeSettings::
 // membrane_fallback): the carried-over drape squeezes some fine triangles to 0.6-0.7 of their
