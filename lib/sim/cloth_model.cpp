@@ -81,7 +81,7 @@ ClothModel cloth_model(const Garment& g, const Scene& scene, const TriangleMesh*
   ClothModel m;
   m.vertex_count = static_cast<int>(g.V.rows());
   m.material = scene.material;
-  m.stiffness = membrane_stiffness(scene.material, params.compression_fraction);
+  m.stiffness = membrane_stiffness(scene.material);
   m.gravity = scene.gravity;
   m.mass = VectorXd::Zero(m.vertex_count);
   m.contact_area = VectorXd::Zero(m.vertex_count);

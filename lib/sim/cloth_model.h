@@ -26,11 +26,6 @@ struct ClothParams {
   // Zero-length stitch springs, as a multiple of the material's largest stretch stiffness
   // [N/m per N/m]: a stitch gap of 1 % of the membrane strain at equal force.
   double stitch_stiffness_factor = 100.0;
-  // Fraction of the tensile stiffness kept in compression (see MembraneStiffness). 1 = plain
-  // StVK: no measured value exists for our fabrics. Lowering it makes every fabric drape lower
-  // in the Cusick test (1 -> 0.01: silk 0.41 -> 0.25, cotton 0.28 -> 0.21, on an 8 mm mesh with
-  // the earlier presets, tests/lib/sim/physics_test.cpp); plain StVK orders the fabrics.
-  double compression_fraction = 1.0;
   // Cloth-cloth contact, when the scene asks for it. Thickness [m]: the distance a vertex is
   // held from another layer, about three thicknesses of cotton (Penava et al. 2014: 0.318 mm),
   // so that layers also stay apart between the vertices of 5-10 mm meshes; our choice.

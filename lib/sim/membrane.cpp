@@ -8,11 +8,11 @@
 
 namespace foldsketch {
 
-MembraneStiffness membrane_stiffness(const Material& m, double compression) {
+MembraneStiffness membrane_stiffness(const Material& m) {
   const double e1 = m.stretch_weft, e2 = m.stretch_warp, nu12 = m.poisson;
   const double nu21 = nu12 * e2 / e1;
   const double denom = 1.0 - nu12 * nu21;
-  return {e1 / denom, nu12 * e2 / denom, e2 / denom, m.shear, compression};
+  return {e1 / denom, nu12 * e2 / denom, e2 / denom, m.shear};
 }
 
 MembraneRest membrane_rest(const Vector2d& X0, const Vector2d& X1, const Vector2d& X2) {
@@ -36,17 +36,6 @@ Eigen::Matrix<double, 2, 3> shape_gradients(const MembraneRest& rest) {
 
 namespace {
 using Matrix32 = Eigen::Matrix<double, 3, 2>;
-
-// The stiffness in force at strain E: normal stiffnesses softened where compressive.
-MembraneStiffness active(const MembraneStiffness& k, const Eigen::Matrix2d& E) {
-  if (k.compression == 1.0) return k;
-  MembraneStiffness a = k;
-  const double f1 = E(0, 0) < 0.0 ? k.compression : 1.0, f2 = E(1, 1) < 0.0 ? k.compression : 1.0;
-  a.c11 *= f1;
-  a.c22 *= f2;
-  a.c12 *= std::sqrt(f1 * f2);
-  return a;
-}
 
 Eigen::Matrix2d stress(const Eigen::Matrix2d& E, const MembraneStiffness& k) {
   Eigen::Matrix2d S;
@@ -73,7 +62,7 @@ Eigen::Vector3d green_strain(const Vector3d& x0, const Vector3d& x1, const Vecto
 }
 
 namespace {
-// W = A (c11/2 E11^2 + c12 E11 E22 + c22/2 E22^2 + 2 c33 E12^2), with k the active stiffness.
+// W = A (c11/2 E11^2 + c12 E11 E22 + c22/2 E22^2 + 2 c33 E12^2).
 double strain_energy(const Eigen::Matrix2d& E, const MembraneStiffness& k, double area) {
   return area * (0.5 * k.c11 * E(0, 0) * E(0, 0) + k.c12 * E(0, 0) * E(1, 1) + 0.5 * k.c22 * E(1, 1) * E(1, 1) +
                  2.0 * k.c33 * E(0, 1) * E(0, 1));
@@ -83,15 +72,14 @@ double strain_energy(const Eigen::Matrix2d& E, const MembraneStiffness& k, doubl
 double membrane_energy(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest,
                        const MembraneStiffness& stiffness) {
   const Eigen::Matrix2d E = strain_of(deformation(x0, x1, x2, rest));
-  return strain_energy(E, active(stiffness, E), rest.area);
+  return strain_energy(E, stiffness, rest.area);
 }
 
 Element9 membrane_element(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest,
                           const MembraneStiffness& stiffness, bool want_hessian, HessianKind kind) {
   const Matrix32 F = deformation(x0, x1, x2, rest);
   const Eigen::Matrix2d E = strain_of(F);
-  // Piecewise quadratic in each normal strain: C1 energy, exact Hessian away from E = 0.
-  const MembraneStiffness k = active(stiffness, E);
+  const MembraneStiffness& k = stiffness;
   const Eigen::Matrix2d S = stress(E, k);
   Element9 out;
   out.energy = strain_energy(E, k, rest.area);
@@ -139,7 +127,7 @@ Element9 membrane_element(const Vector3d& x0, const Vector3d& x1, const Vector3d
 Eigen::Matrix2d membrane_stress(const Vector3d& x0, const Vector3d& x1, const Vector3d& x2, const MembraneRest& rest,
                                 const MembraneStiffness& k) {
   const Eigen::Matrix2d E = strain_of(deformation(x0, x1, x2, rest));
-  return stress(E, active(k, E));
+  return stress(E, k);
 }
 
 } // namespace foldsketch
