@@ -11,6 +11,7 @@
 #include "formats/garment_io.h"
 #include "formats/json_writer.h"
 #include "formats/scene_xml.h"
+#include "garment/drape_scale.h"
 #include "sim/coarse_to_fine.h"
 #include "sim/drape_solver.h"
 #include "sim/pattern_change.h"
@@ -185,6 +186,9 @@ int main(int argc, char** argv) {
       garment.V = init.V;
       if (init.P.rows() == garment.P.rows() && init.FP == garment.FP && init.P != garment.P) init_patterns = init.P;
     }
+    // Patterns in other units than the drape cannot drape: say so before simulating.
+    if (const std::string error = drape_scale_error(garment); !error.empty())
+      throw InputError(patterns_path, 0, init_path.empty() ? error : error + " (the drape: " + init_path + ")");
     std::optional<TriangleMesh> body;
     if (scene.physics.body_contact && scene.body) body = read_body_mesh(scene_relative(scene_path, scene.body->file));
     std::vector<int> pinned;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "garment/drape_scale.h"
 #include "mesh/mesh_edges.h"
 #include "mesh/triangle_geometry.h"
 
@@ -27,7 +28,8 @@ std::string name_edges(const std::vector<std::array<int, 2>>& edges) {
 bool GarmentIssues::empty() const {
   return nonfinite_drape_vertices.empty() && nonfinite_pattern_vertices.empty() && degenerate_pattern_faces.empty() &&
          degenerate_drape_faces.empty() && sliver_pattern_faces.empty() && flipped_pattern_faces.empty() &&
-         nonmanifold_pattern_edges.empty() && nonmanifold_drape_edges.empty() && misoriented_drape_edges.empty();
+         nonmanifold_pattern_edges.empty() && nonmanifold_drape_edges.empty() && misoriented_drape_edges.empty() &&
+         drape_scale.empty();
 }
 
 std::vector<std::string> GarmentIssues::messages() const {
@@ -45,11 +47,13 @@ std::vector<std::string> GarmentIssues::messages() const {
   add(nonmanifold_drape_edges.size(), "non-manifold drape edges (3+ triangles): v", name_edges(nonmanifold_drape_edges));
   add(misoriented_drape_edges.size(), "drape edges walked the same way by both triangles (inconsistent orientation): v",
       name_edges(misoriented_drape_edges));
+  if (!drape_scale.empty()) out.push_back(drape_scale);
   return out;
 }
 
 GarmentIssues garment_issues(const Garment& g, const IssueParams& params) {
   GarmentIssues issues;
+  issues.drape_scale = drape_scale_error(g);
   for (int v = 0; v < g.V.rows(); ++v)
     if (!g.V.row(v).allFinite()) issues.nonfinite_drape_vertices.push_back(v);
   for (int p = 0; p < g.P.rows(); ++p)

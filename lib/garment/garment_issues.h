@@ -29,6 +29,7 @@ struct GarmentIssues {
   std::vector<std::array<int, 2>> nonmanifold_pattern_edges;  // pattern edges of 3+ triangles
   std::vector<std::array<int, 2>> nonmanifold_drape_edges;    // drape edges of 3+ triangles
   std::vector<std::array<int, 2>> misoriented_drape_edges;    // two triangles walk it the same way
+  std::string drape_scale;  // drape_scale_error(): patterns in other units than the drape; empty when none
 
   bool empty() const;
   // One line per kind of problem, counting and naming the first few (1-based, as in the OBJ).

@@ -83,6 +83,21 @@ TEST(DrapeFree, BadInputIsLocatedAndWritesNothing) {
   EXPECT_FALSE(std::filesystem::exists(folder + "/out.obj"));
 }
 
+// Patterns exported in millimetres (vt 1000 times the drape's metres) are refused at once,
+// with the factor, instead of simulated to a dead end; the input stays as it was.
+TEST(DrapeFree, PatternsInOtherUnitsThanTheDrapeAreRefused) {
+  const std::string folder = make_sample_folder("flag", 600);
+  Garment g = read_garment(folder + "/garment.obj");
+  g.P *= 1000.0;
+  write_garment(g, folder + "/garment.obj");
+  const std::string before = test::read_text(folder + "/garment.obj");
+  const auto r = test::run(test::tool_path("drape-free") + " " + folder + "/scene.xml -o " + folder + "/out.obj");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err.rfind("drape-free: " + folder + "/garment.obj: the drape is 0.001 times the size of its patterns", 0), 0u) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(folder + "/out.obj"));
+  EXPECT_EQ(test::read_text(folder + "/garment.obj"), before);
+}
+
 // A re-drape after the patterns change (--patterns new, --init the drape of the old ones)
 // starts from the drape's predicted response to the change, and says so; --no-predictor and
 // an unchanged pattern start from the drape as it is.

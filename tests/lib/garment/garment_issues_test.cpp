@@ -23,6 +23,15 @@ TEST(GarmentIssues, DegenerateTriangleIsReportedNotThrown) {
   EXPECT_FALSE(issues.messages().empty());
 }
 
+TEST(GarmentIssues, PatternsInOtherUnitsThanTheDrapeAreReported) {
+  Garment g = test::square_panel(3);
+  g.P *= 1000.0;  // millimetres against the drape's metres
+  const GarmentIssues issues = garment_issues(g);
+  EXPECT_FALSE(issues.empty());
+  ASSERT_EQ(issues.messages().size(), 1u);
+  EXPECT_EQ(issues.messages()[0].rfind("the drape is 0.001 times the size of its patterns", 0), 0u) << issues.messages()[0];
+}
+
 TEST(GarmentIssues, SliverIsReported) {
   Garment g = test::square_panel(1);
   g.P.row(3) << 0.05, 1.0;  // triangle (0, 3, 2) becomes a 2.9-degree sliver
