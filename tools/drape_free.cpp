@@ -12,6 +12,7 @@
 #include "formats/json_writer.h"
 #include "formats/scene_xml.h"
 #include "garment/drape_scale.h"
+#include "garment/pins.h"
 #include "sim/coarse_to_fine.h"
 #include "sim/drape_solver.h"
 #include "sim/pattern_change.h"
@@ -200,6 +201,13 @@ int main(int argc, char** argv) {
     } catch (const ArgumentError& e) {
       throw InputError(scene_path, 0, e.what());
     }
+    // Pins that hold the cloth far beyond any fabric's stretch leave it no equilibrium near its
+    // rest shape: say so before the solve (it may still run, to whatever end).
+    if (const PinnedEdge e = most_stretched_pinned_edge(garment, pinned); e.v0 >= 0 && e.stretch > kLargestPinnedStretch)
+      std::fprintf(stderr,
+                   "drape-free: warning: %s: the pins hold the edge v%d-v%d at %.3g times its pattern length (more than "
+                   "%.3g): the cloth between them cannot come near its rest shape; expect large strains or no convergence\n",
+                   scene_path.c_str(), e.v0 + 1, e.v1 + 1, e.stretch, kLargestPinnedStretch);
     // The predictor serves static re-drapes on the garment's own mesh only.
     if (init_patterns && !no_predictor && !coarse_to_fine && coarse_levels_asked.empty() &&
         scene.simulator.mode == SimulationMode::Static) {

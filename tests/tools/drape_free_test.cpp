@@ -98,6 +98,21 @@ TEST(DrapeFree, PatternsInOtherUnitsThanTheDrapeAreRefused) {
   EXPECT_EQ(test::read_text(folder + "/garment.obj"), before);
 }
 
+// Pins that hold cloth twice its pattern length get a warning that names the edge before the
+// solve; the sample's own pins (cloth at rest between them) get none.
+TEST(DrapeFree, PinsHoldingTheClothFarFromItsRestShapeAreWarnedOf) {
+  const std::string folder = make_sample_folder("flag", 600);
+  const std::string out = folder + "/out.obj";
+  const auto at_rest = test::run(test::tool_path("drape-free") + " --max-steps 1 " + folder + "/scene.xml -o " + out);
+  EXPECT_EQ(at_rest.err.find("warning"), std::string::npos) << at_rest.err;
+  Garment g = read_garment(folder + "/garment.obj");
+  g.P *= 0.5;  // the drape twice its patterns' size: within the units check, but the pole edge held at 2x
+  write_garment(g, folder + "/garment.obj");
+  const auto r = test::run(test::tool_path("drape-free") + " --max-steps 1 " + folder + "/scene.xml -o " + out);
+  EXPECT_EQ(r.err.rfind("drape-free: warning: " + folder + "/scene.xml: the pins hold the edge v", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(" at 2 times its pattern length"), std::string::npos) << r.err;
+}
+
 // A re-drape after the patterns change (--patterns new, --init the drape of the old ones)
 // starts from the drape's predicted response to the change, and says so; --no-predictor and
 // an unchanged pattern start from the drape as it is.

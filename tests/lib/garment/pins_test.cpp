@@ -1,5 +1,7 @@
 #include "garment/pins.h"
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "support/test_support.h"
@@ -15,6 +17,19 @@ TEST(Pins, BoxSelectsTheEdgeOfAPanel) {
   ASSERT_EQ(pins.size(), 2u);
   EXPECT_EQ(pins[1].vertex, 10);
   EXPECT_EQ(pins[1].position, Vector3d(0, 0.5, 0));
+}
+
+TEST(Pins, MostStretchedPinnedEdgeIsTheLongestAgainstItsPattern) {
+  Garment g = test::square_panel(2, 1.0);  // vertices 0-2 the bottom row, 6-8 the top one
+  EXPECT_EQ(most_stretched_pinned_edge(g, {}).v0, -1);
+  EXPECT_EQ(most_stretched_pinned_edge(g, {0, 8}).v0, -1);  // no edge joins them
+  g.V(2, 0) = 2.5;  // the bottom row's right edge, 0.5 m in the pattern, now 2 m long
+  const PinnedEdge e = most_stretched_pinned_edge(g, {0, 1, 2});
+  EXPECT_EQ(std::minmax(e.v0, e.v1), std::minmax(1, 2));
+  EXPECT_DOUBLE_EQ(e.stretch, 4.0);
+  const PinnedEdge at_rest = most_stretched_pinned_edge(g, {6, 7, 8});
+  EXPECT_NE(at_rest.v0, -1);
+  EXPECT_DOUBLE_EQ(at_rest.stretch, 1.0);
 }
 
 } // namespace
