@@ -117,6 +117,9 @@ int main(int argc, char** argv) {
                "(v of --init, default the same garment), simulates the cloth alone to equilibrium and writes the\n"
                "garment OBJ with the equilibrium drape (metres). Reports steps, Newton iterations, factorisations,\n"
                "relative force residual, max strain, deepest body penetration and time per phase.\n"
+               "Patterns and drape are both in metres: a drape on median more than 3 times larger or smaller\n"
+               "than its patterns (patterns in mm or cm, texture coordinates in vt) is refused. Warns when the\n"
+               "pins hold an edge more than 1.5 times its pattern length.\n"
                "Exit 1 when it does not converge (nothing written unless --write-unconverged).",
                "drape-free"};
   std::string scene_path, patterns_path, init_path, output;
