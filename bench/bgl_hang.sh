@@ -1,11 +1,12 @@
 #!/bin/bash
-# Drapes every Berkeley Garment Library garment (../shared/data/bgl, the combined files whose vt
-# hold the patterns) hanging from its top band, in thin cotton, without a body: real garments
-# not made by us, with their slivers and distorted placements, through drape-free as a user
-# runs it. Prints one row per garment (OBJ faces, Newton iterations, seconds, residual, max
+# Drapes every Berkeley Garment Library garment (../shared/data/bgl, the combined files whose
+# vt hold the patterns) hanging from its top band, in thin cotton or MATERIAL, without a body:
+# real garments not made by us, with their slivers and distorted placements, through drape-free
+# as a user runs it. Prints one row per garment (OBJ faces, Newton iterations, seconds, residual, max
 # strain, and the pins' most stretched edge when drape-free warns of it) and a count.
 #
-#   bench/bgl_hang.sh [BGL_FOLDER] [isotropic|coarse]     (defaults: ../shared/data/bgl isotropic)
+#   bench/bgl_hang.sh [BGL_FOLDER] [isotropic|coarse] [MATERIAL]
+#   (defaults: ../shared/data/bgl, isotropic, cotton-thin; MATERIAL a preset of drape-free's scenes)
 #
 # The top band: drape vertices within 13.5 mm of the highest one (the hard case
 # HardCases.RealGarmentHangsFromItsDistortedPlacement's choice for the skirt). Each drape may run
@@ -14,6 +15,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 bgl=${1:-$here/../shared/data/bgl}
 variant=${2:-isotropic}
+material=${3:-cotton-thin}
 tool=$here/build/bin/drape-free
 [ -x "$tool" ] || { echo "bgl_hang: build first (./foldsketch test, or cmake --build build)" >&2; exit 2; }
 [ -d "$bgl/Garments" ] || { echo "bgl_hang: $bgl/Garments: no such folder" >&2; exit 2; }
@@ -33,7 +35,7 @@ for f in "$bgl"/Garments/*/"$variant"/*.obj; do
 <?xml version="1.0" encoding="UTF-8"?>
 <scene name="$name">
   <garment file="$f"/>
-  <material preset="cotton-thin"/>
+  <material preset="$material"/>
   <gravity x="0" y="-9.81" z="0"/>
   <physics body-contact="false" self-contact="false" friction="false" hemline="false"/>
   <pin box="-100 $top -100 100 100 100"/>

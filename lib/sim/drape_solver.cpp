@@ -238,7 +238,8 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         if (laplacian_metric) energy.add_laplacian(A, metric_laplacian * (mass_term - applied_damping), weights);
         applied_damping = mass_term;
         factor_current = cholesky.factorize(A);
-        if (!factor_current && fallback_allowed && membrane_now == HessianKind::Exact) {
+        if (!factor_current && fallback_allowed && membrane_now == HessianKind::Exact &&
+            stats.projected_iterations < settings.membrane_fallback_budget) {
           // Not positive definite: the same damping with projected membrane elements first.
           membrane_now = HessianKind::Projected;
           fallback_left = settings.membrane_fallback_iterations;
