@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "mesh/triangle_geometry.h"
 
 namespace foldsketch {
 
@@ -28,14 +29,14 @@ PinnedEdge most_stretched_pinned_edge(const Garment& g, const std::vector<int>& 
   std::vector<char> held(static_cast<size_t>(g.V.rows()), 0);
   for (int v : pinned)
     if (v >= 0 && v < g.V.rows()) held[static_cast<size_t>(v)] = 1;
+  const MatrixX3d drape = edge_lengths(g.V, g.F), pattern = edge_lengths(g.P, g.FP);  // column k: opposite corner k
   PinnedEdge most;
   for (Eigen::Index f = 0; f < g.F.rows(); ++f)
-    for (int i = 0; i < 3; ++i) {
-      const int j = (i + 1) % 3, a = g.F(f, i), b = g.F(f, j);
-      if (!held[static_cast<size_t>(a)] || !held[static_cast<size_t>(b)]) continue;
-      const double pattern = (g.P.row(g.FP(f, i)) - g.P.row(g.FP(f, j))).norm();
-      const double stretch = (g.V.row(a) - g.V.row(b)).norm() / pattern;
-      if (pattern > 0 && (most.v0 < 0 || stretch > most.stretch)) most = {a, b, stretch};
+    for (int k = 0; k < 3; ++k) {
+      const int a = g.F(f, (k + 1) % 3), b = g.F(f, (k + 2) % 3);
+      if (!held[static_cast<size_t>(a)] || !held[static_cast<size_t>(b)] || !(pattern(f, k) > 0)) continue;
+      const double stretch = drape(f, k) / pattern(f, k);
+      if (most.v0 < 0 || stretch > most.stretch) most = {a, b, stretch};
     }
   return most;
 }

@@ -36,7 +36,8 @@ struct PinnedEdge {
 constexpr double kLargestPinnedStretch = 1.5;
 
 // Of the edges of g's triangles whose two drape ends are both in `pinned`, the one the pins
-// hold longest against its pattern length (the first of equals in triangle order).
+// hold longest against its pattern length (the first of equals in triangle order; within a
+// triangle, in the order of the corners the edges face).
 PinnedEdge most_stretched_pinned_edge(const Garment& g, const std::vector<int>& pinned);
 
 } // namespace foldsketch
