@@ -74,6 +74,13 @@ DrapeSettings drape_settings(const SimulatorSettings& scene) {
   return s;
 }
 
+DrapeSettings redrape_settings(DrapeSettings settings) {
+  if (settings.preset == SolverPreset::Fast && settings.fast_redrape_budget > 0 &&
+      (settings.newton_budget <= 0 || settings.fast_redrape_budget < settings.newton_budget))
+    settings.newton_budget = settings.fast_redrape_budget;
+  return settings;
+}
+
 namespace {
 double principal_stretch(const ClothModel& model, const MatrixX3d& x, size_t t, int which) {
   const auto& v = model.triangles[t];
@@ -341,6 +348,14 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
       stats.message = "converged";
       break;
     }
+    if (!dynamic && settings.newton_budget > 0 && stats.newton_iterations >= settings.newton_budget) {
+      char text[200];
+      std::snprintf(text, sizeof text, "stopped at its budget of %d Newton iterations with relative residual %.3g (not an equilibrium)",
+                    settings.newton_budget, stats.residual);
+      stats.message = text;
+      stats.stopped_at_budget = true;
+      break;
+    }
     if (iteration >= settings.max_steps) {
       char text[200];
       std::snprintf(text, sizeof text, "stopped after %d %s with relative residual %.3g above %.3g", settings.max_steps,
@@ -405,6 +420,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   if (!x.allFinite()) {
     x = initial;
     stats.converged = false;
+    stats.stopped_at_budget = false;
     stats.message = "diverged: NaN in the drape; returning the initial drape";
   }
   result.V = std::move(x);

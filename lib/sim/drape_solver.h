@@ -16,10 +16,11 @@
 //
 // Presets: Accurate refactorises every Newton iteration with exact element Hessians and stops
 // at the tolerance; Fast is the same iteration stopped at fast_tolerance_factor times the
-// tolerance. Measured and rejected for Fast (skirt, 5K triangles, bench/): Gauss-Newton element
-// Hessians (3000 iterations without converging, vs 377 for exact), and reusing one
-// factorisation for up to 10 iterations (stale damping shortens the steps: 928 iterations
-// instead of 37 on a 2K box cover). A looser stop is no cheaper either: the residual stays high
+// tolerance, and on a re-drape (redrape_settings) after fast_redrape_budget Newton iterations
+// at the latest, not at an equilibrium. Measured and rejected for Fast (skirt, 5K triangles,
+// bench/): Gauss-Newton element Hessians (3000 iterations without converging, vs 377 for
+// exact), and reusing one factorisation for up to 10 iterations (stale damping shortens the
+// steps: 928 iterations instead of 37 on a 2K box cover). A looser stop is no cheaper either: the residual stays high
 // while folds form and then collapses quadratically (5K skirt: tolerance 1e-2 saves 40 % of the
 // iterations at 3.6 mm mean error; 3e-3 saves 1 %).
 #pragma once
@@ -82,6 +83,20 @@ struct DrapeSettings {
   double laplacian_mass_share = 0.1;
   // Fast preset: residual at which it stops, as a multiple of `tolerance` (measured: see bench/).
   double fast_tolerance_factor = 100.0;
+  // Static mode: Newton iterations after which the solve stops and returns the drape as it is,
+  // DrapeStats::stopped_at_budget (0: no budget). Not an equilibrium: a truncation whose error
+  // is measured, not bounded (no local model bounds how far folds still slide,
+  // bench/drape_bench.txt). What the Fast preset does on re-drapes (redrape_settings).
+  int newton_budget = 0;
+  // The Fast preset's budget on a re-drape. Measured on the skirt's re-drapes from the stored
+  // starts (bench/drape_bench.txt, 2026-12-06: 5K-20K, patterns 2, 5 and 10 % wider, 3 starts
+  // each), after 20 Newton iterations 0.3-0.8 of the predicted start's distance to the
+  // equilibrium is left, median 0.5 (20K: 1.1-1.8 -> 0.74-0.96 mm mean at 2 %, 3.0-4.0 ->
+  // 1.29-1.88 mm at 5 %, 6.6-7.9 -> 3.09-3.29 mm at 10 %; 2.0-2.5 s), and 30 iterations take a
+  // further fifth off. A cold drape (from a placement) moves tens of millimetres while its
+  // folds form, so it has no budget: there Fast stops on its residual alone. 20: our choice,
+  // the 3 s of the fast target at 20K triangles.
+  int fast_redrape_budget = 20;
   // Element Hessians. Exact: near a stable equilibrium the assembled
   // Hessian is positive definite even where elements are not (compressed triangles, folded
   // hinges), and the damping grows only when CHOLMOD finds it is not. Projecting each element
@@ -174,6 +189,12 @@ struct DrapeSettings {
 
 DrapeSettings drape_settings(const SimulatorSettings& scene);
 
+// The settings of a re-drape: a static solve from an equilibrium under other patterns (or its
+// predicted response, lib/sim/pattern_change.h). With the Fast preset, the solve stops after
+// fast_redrape_budget Newton iterations at the latest (newton_budget; a smaller one already
+// set stays); the Accurate preset is unchanged.
+DrapeSettings redrape_settings(DrapeSettings settings);
+
 // The line searches' Armijo sufficient-decrease constant and the shortest step they try.
 constexpr double kLineSearchArmijo = 1e-4, kLineSearchMinStep = 1.0 / 1024;
 
@@ -201,6 +222,7 @@ struct DrapeStats {
   bool converged = false;
   std::string message;              // why it stopped, in words
   bool out_of_steps = false;        // stopped by max_steps, not converged (the energy was still falling)
+  bool stopped_at_budget = false;   // stopped by DrapeSettings::newton_budget, as asked (not converged)
   int steps = 0;                    // accepted steps
   int newton_iterations = 0;
   int factorizations = 0;

@@ -110,5 +110,51 @@ TEST(DrapeSolver, ProgressSeesTheDrapeOfEveryStep) {
   for (const MatrixX3d& x : seen) EXPECT_EQ(x.rows(), s.garment.V.rows());
 }
 
+// A budget (DrapeSettings::newton_budget) stops a static solve after that many Newton
+// iterations and returns the drape it reached, marked as stopped at the budget, not as
+// converged: the same drape the unbudgeted solve passes through at that iteration.
+TEST(DrapeSolver, BudgetStopsTheSolveWhereTheFullSolveWasAtThatIteration) {
+  const SqueezedSheet s = squeezed_sheet(0.95);
+  DrapeSettings full;
+  MatrixX3d after_five;
+  const DrapeResult whole = solve_drape(s.model, s.garment.V, full, [&](const DrapeStats& stats, const MatrixX3d& x) {
+    if (stats.newton_iterations == 5 && after_five.size() == 0) after_five = x;
+  });
+  ASSERT_TRUE(whole.stats.converged) << whole.stats.message;
+  ASSERT_GT(whole.stats.newton_iterations, 5) << "the sheet drapes within the budget: the case tests nothing";
+  ASSERT_EQ(after_five.rows(), s.garment.V.rows());
+  DrapeSettings budget = full;
+  budget.newton_budget = 5;
+  const DrapeResult cut = solve_drape(s.model, s.garment.V, budget);
+  EXPECT_TRUE(cut.stats.stopped_at_budget);
+  EXPECT_FALSE(cut.stats.converged);
+  EXPECT_FALSE(cut.stats.out_of_steps);
+  EXPECT_EQ(cut.stats.newton_iterations, 5);
+  EXPECT_NE(cut.stats.message.find("budget of 5 Newton iterations"), std::string::npos) << cut.stats.message;
+  EXPECT_GT(cut.stats.residual, whole.stats.residual);
+  EXPECT_LE((cut.V - after_five).norm(), 1e-12);
+  EXPECT_TRUE(cut.V.allFinite());
+  // A budget the solve does not reach changes nothing.
+  budget.newton_budget = whole.stats.newton_iterations + 1;
+  const DrapeResult roomy = solve_drape(s.model, s.garment.V, budget);
+  EXPECT_TRUE(roomy.stats.converged);
+  EXPECT_FALSE(roomy.stats.stopped_at_budget);
+  EXPECT_EQ(roomy.stats.newton_iterations, whole.stats.newton_iterations);
+}
+
+// Re-drapes (redrape_settings) give the Fast preset its budget and leave Accurate alone; a
+// smaller budget already set stays.
+TEST(DrapeSolver, RedrapeSettingsBudgetTheFastPresetOnly) {
+  DrapeSettings accurate;
+  EXPECT_EQ(redrape_settings(accurate).newton_budget, 0);
+  DrapeSettings fast;
+  fast.preset = SolverPreset::Fast;
+  EXPECT_EQ(redrape_settings(fast).newton_budget, fast.fast_redrape_budget);
+  fast.newton_budget = fast.fast_redrape_budget / 2;
+  EXPECT_EQ(redrape_settings(fast).newton_budget, fast.fast_redrape_budget / 2);
+  fast.newton_budget = 2 * fast.fast_redrape_budget;
+  EXPECT_EQ(redrape_settings(fast).newton_budget, fast.fast_redrape_budget);
+}
+
 } // namespace
 } // namespace foldsketch
