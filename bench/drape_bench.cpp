@@ -87,11 +87,13 @@ struct Summary {
   bool has_error = false;  // against a reference
   ErrorMm error;
   bool converged = true;
+  bool budget = false;  // stopped at the Fast preset's re-drape budget (DrapeSettings::newton_budget), as asked
 };
 
 Summary summary(const DrapeStats& s, double seconds, const std::optional<ErrorMm>& error) {
   return {seconds, static_cast<double>(s.newton_iterations), static_cast<double>(s.factorizations),
-          s.seconds_factorization / s.seconds_total, s.residual, error.has_value(), error.value_or(ErrorMm{}), s.converged};
+          s.seconds_factorization / s.seconds_total, s.residual, error.has_value(), error.value_or(ErrorMm{}), s.converged,
+          s.stopped_at_budget};
 }
 
 // The median over starts of each column; the worst residual and max error; converged if all are.
@@ -113,6 +115,7 @@ Summary median_summary(const std::vector<Summary>& all) {
   const std::vector<double> maxima = column([](const Summary& s) { return s.error.max; });
   m.error.max = *std::max_element(maxima.begin(), maxima.end());
   m.converged = std::all_of(all.begin(), all.end(), [](const Summary& s) { return s.converged; });
+  m.budget = std::any_of(all.begin(), all.end(), [](const Summary& s) { return s.budget; });
   return m;
 }
 
@@ -123,7 +126,8 @@ void print_row(long triangles, const std::string& label, const Summary& s) {
     std::snprintf(max_error, sizeof max_error, "%.3f", s.error.max);
   }
   std::printf("%9ld %-9s %10.2f %7.0f %8.0f %7.0f%% %9.2e %10s %10s%s\n", triangles, label.c_str(), s.seconds, s.iterations,
-              s.factorizations, 100 * s.share, s.residual, mean_error, max_error, s.converged ? "" : "  (not converged)");
+              s.factorizations, 100 * s.share, s.residual, mean_error, max_error,
+              s.converged ? "" : s.budget ? "  (budget)" : "  (not converged)");
   std::fflush(stdout);
 }
 
@@ -280,7 +284,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "drape_bench: %s (run from the repository root, or give --body)\n", e.what());
     return 1;
   }
-  const char* header = "triangles,preset,median_s,newton_iterations,factorizations,factorization_share,residual,mean_error_mm,max_error_mm,converged\n";
+  // stopped_at_budget: the Fast preset's re-drape budget ended the solve (converged 0).
+  const char* header = "triangles,preset,median_s,newton_iterations,factorizations,factorization_share,residual,mean_error_mm,max_error_mm,converged,stopped_at_budget\n";
   std::ofstream csv, warm_csv;
   if (cold && !csv_path.empty()) (csv.open(csv_path), csv << header);
   if (warm && !warm_csv_path.empty()) (warm_csv.open(warm_csv_path), warm_csv << header);
@@ -306,8 +311,9 @@ int main(int argc, char** argv) {
     if (out.is_open())
       out << triangles << ',' << preset << ',' << s.seconds << ',' << s.iterations << ',' << s.factorizations << ','
           << s.share << ',' << s.residual << ',' << (s.has_error ? (std::ostringstream() << s.error.mean).str() : "") << ','
-          << (s.has_error ? (std::ostringstream() << s.error.max).str() : "") << ',' << (s.converged ? 1 : 0) << '\n';
-    if (s.converged) rows.push_back({start_name, preset, static_cast<double>(triangles), s.seconds, s.iterations});
+          << (s.has_error ? (std::ostringstream() << s.error.max).str() : "") << ',' << (s.converged ? 1 : 0) << ','
+          << (s.budget ? 1 : 0) << '\n';
+    if (s.converged || s.budget) rows.push_back({start_name, preset, static_cast<double>(triangles), s.seconds, s.iterations});
   };
   // Both presets from `start`, each timed `runs` times, against `reference` (none: null); prints
   // a row per preset, and with a reference and --trajectory writes the last run's error along the solve to the
@@ -317,14 +323,15 @@ int main(int argc, char** argv) {
     MatrixX3d drape;
   };
   // `head_start` [s]: time spent before the solve on making `start` (the pattern-change
-  // predictor's), added to every run's and every trajectory point's time.
+  // predictor's), added to every run's and every trajectory point's time. `redrape`: the start
+  // is a predicted re-drape, so the presets solve with redrape_settings, as drape-free's do.
   const auto time_presets = [&](const char* start_name, const ClothModel& model, const MatrixX3d& start,
-                                const DrapeResult* reference, double head_start = 0.0) {
+                                const DrapeResult* reference, double head_start = 0.0, bool redrape = false) {
     Timed timed{{}, start};
     bool have_accurate = false;
     for (const SolverPreset preset : {SolverPreset::Accurate, SolverPreset::Fast}) {
       if (std::find(presets.begin(), presets.end(), to_string(preset)) == presets.end()) continue;
-      const DrapeSettings settings = timed_settings(preset);
+      const DrapeSettings settings = redrape ? redrape_settings(timed_settings(preset)) : timed_settings(preset);
       std::vector<double> seconds;
       DrapeResult result;
       // The error along the last run, against the reference: one pass over the vertices per
@@ -355,6 +362,9 @@ int main(int argc, char** argv) {
       if (reference) error = error_mm(result.V, reference->V);
       const Summary row = summary(result.stats, median(seconds), error);
       print_row(static_cast<long>(model.triangles.size()), to_string(preset), row);
+      if (result.stats.stopped_at_budget)  // what drape-free reports of such a drape, beside its error
+        std::printf("%9s %s stopped at its budget of %d Newton iterations, %.3f mm mean from its start\n", "",
+                    to_string(preset), settings.newton_budget, error_mm(result.V, start).mean);
       timed.presets.emplace_back(to_string(preset), row);
       if (follow) {
         for (const Point& p : along) {
@@ -543,7 +553,7 @@ int main(int argc, char** argv) {
         // Every start's solves go to the trajectory CSV, as warm, warm2, warm3 (the plot draws warm).
         const std::string warm_name = i == 0 ? "warm" : "warm" + std::to_string(i + 1);
         const Timed timed = time_presets(warm_name.c_str(), wider_model, predicted.V, wider_reference ? &*wider_reference : nullptr,
-                                         predicted.seconds);
+                                         predicted.seconds, predicted.applied);
         if (wider_reference) {
           start_errors.push_back(error_mm(start, wider_reference->V));
           print_start_row(triangles, start_errors.back());
@@ -571,7 +581,7 @@ int main(int argc, char** argv) {
     }
   }
 
-  // Cost growth over the sizes, per start and preset (converged rows only).
+  // Cost growth over the sizes, per start and preset (converged rows and budget stops).
   std::vector<std::string> with_c2f = presets;
   with_c2f.push_back("c2f");
   bool first = true;
