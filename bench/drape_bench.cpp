@@ -324,7 +324,8 @@ int main(int argc, char** argv) {
   };
   // `head_start` [s]: time spent before the solve on making `start` (the pattern-change
   // predictor's), added to every run's and every trajectory point's time. `redrape`: the start
-  // is a predicted re-drape, so the presets solve with redrape_settings, as drape-free's do.
+  // is a re-drape from near an equilibrium (the predictor's force test, PatternChangeStep::
+  // near_equilibrium), so the presets solve with redrape_settings, as drape-free's do.
   const auto time_presets = [&](const char* start_name, const ClothModel& model, const MatrixX3d& start,
                                 const DrapeResult* reference, double head_start = 0.0, bool redrape = false) {
     Timed timed{{}, start};
@@ -553,7 +554,7 @@ int main(int argc, char** argv) {
         // Every start's solves go to the trajectory CSV, as warm, warm2, warm3 (the plot draws warm).
         const std::string warm_name = i == 0 ? "warm" : "warm" + std::to_string(i + 1);
         const Timed timed = time_presets(warm_name.c_str(), wider_model, predicted.V, wider_reference ? &*wider_reference : nullptr,
-                                         predicted.seconds, predicted.applied);
+                                         predicted.seconds, predicted.near_equilibrium);
         if (wider_reference) {
           start_errors.push_back(error_mm(start, wider_reference->V));
           print_start_row(triangles, start_errors.back());

@@ -80,9 +80,9 @@ std::string budget_text(const DrapeStats& s, double moved) {
   if (!s.stopped_at_budget) return "";
   char line[500];
   std::snprintf(line, sizeof line,
-                "drape-free: fast preset on a re-drape: stopped at its budget, %.3f mm mean from the predicted start; not an "
-                "equilibrium (on the benchmark skirt's re-drapes 0.3-0.8 of the predicted start's distance to it was left, "
-                "median 0.5: bench/README.md); --preset accurate drapes to equilibrium\n", 1000 * moved);
+                "drape-free: fast preset on a re-drape: stopped at its budget, %.3f mm mean from its start; not an "
+                "equilibrium (on the benchmark skirt's re-drapes from equilibria 0.3-0.8 of the predicted start's distance "
+                "to it was left, median 0.5: bench/README.md); --preset accurate drapes to equilibrium\n", 1000 * moved);
   return line;
 }
 
@@ -153,10 +153,11 @@ int main(int argc, char** argv) {
   app.add_option("-o,--output", output, "garment OBJ to write")->required();
   app.add_option("--preset", preset,
                  "solver preset, overriding the scene. accurate: to the tolerance. fast: to 100 times the tolerance; on a "
-                 "re-drape from an equilibrium under other patterns (--init, when the prediction applies) it stops after "
-                 "20 Newton iterations at the latest and writes that drape, which is not an equilibrium: on the benchmark "
-                 "skirt's re-drapes (bench/README.md) 0.3-0.8 of the predicted start's distance to the equilibrium was "
-                 "left (median 0.5), e.g. 1.3-1.9 mm mean in 2.1-2.3 s at 20K triangles with the patterns 5 % wider")
+                 "re-drape (--init a drape of other patterns whose forces under them are under a tenth of those the change "
+                 "adds: an equilibrium, or a drape the fast preset stopped) it stops after 20 Newton iterations at the "
+                 "latest and writes that drape, which is not an equilibrium: on the benchmark skirt's re-drapes from "
+                 "equilibria (bench/README.md) 0.3-0.8 of the predicted start's distance to the equilibrium was left "
+                 "(median 0.5), e.g. 1.3-1.9 mm mean in 2.1-2.3 s at 20K triangles with the patterns 5 % wider")
       ->check(CLI::IsMember({"accurate", "fast"}));
   app.add_option("--tolerance", tolerance, "relative force residual, overriding the scene")->check(CLI::PositiveNumber);
   app.add_option("--max-steps", max_steps, "iterations or time steps, overriding the scene")->check(CLI::PositiveNumber);
@@ -284,7 +285,7 @@ int main(int argc, char** argv) {
         change.max_displacement = settings.max_displacement;
         predictor = predict_pattern_change(*init_model, model, start, change);
         start = predictor->V;
-        if (predictor->applied) settings = redrape_settings(settings);
+        if (predictor->near_equilibrium) settings = redrape_settings(settings);
       }
       result = solve_drape(model, start, settings, progress);
       if (predictor) result.stats.seconds_total += predictor->seconds;

@@ -189,8 +189,9 @@ struct DrapeSettings {
 
 DrapeSettings drape_settings(const SimulatorSettings& scene);
 
-// The settings of a re-drape: a static solve from an equilibrium under other patterns (or its
-// predicted response, lib/sim/pattern_change.h). With the Fast preset, the solve stops after
+// The settings of a re-drape: a static solve from near an equilibrium under other patterns
+// (PatternChangeStep::near_equilibrium; or its predicted response, lib/sim/pattern_change.h),
+// which a drape stopped at this budget is too. With the Fast preset, the solve stops after
 // fast_redrape_budget Newton iterations at the latest (newton_budget; a smaller one already
 // set stays); the Accurate preset is unchanged.
 DrapeSettings redrape_settings(DrapeSettings settings);

@@ -51,6 +51,7 @@ PatternChangeStep predict_pattern_change(const ClothModel& before, const ClothMo
   step.change_residual = g.norm() / scale;
   if (!(g_old.norm() <= settings.max_force_ratio * g.norm()))
     return done("the start is not an equilibrium of its patterns (or the patterns did not change)");
+  step.near_equilibrium = true;
 
   BisectedCholesky cholesky;
   if (!cholesky.factorize(H)) return done("the start is not a stable equilibrium of its patterns (indefinite Hessian)");

@@ -41,6 +41,11 @@ struct PatternChangeSettings {
 struct PatternChangeStep {
   MatrixX3d V;             // the predicted drape (the start itself when not applied)
   bool applied = false;
+  // The start passed the force test (max_force_ratio): an equilibrium of `before` as far as the
+  // change can tell, whether or not the step was then taken (true whenever applied). A drape
+  // the fast preset stopped at its re-drape budget passes it too (its forces 0.05-7 times its
+  // weight, against 100-250 times after a 2-5 % change).
+  bool near_equilibrium = false;
   std::string message;     // why not, when not applied
   double step_fraction = 0;  // of the predicted step, after the cap and the line search
   double step_length = 0;    // largest vertex move [m]

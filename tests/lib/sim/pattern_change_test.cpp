@@ -55,6 +55,7 @@ TEST(PatternChange, LeavesAnErrorOfSecondOrderInTheChange) {
     const ClothModel after = lengthened(h, change);
     const PatternChangeStep step = predict_pattern_change(before, after, h.equilibrium);
     ASSERT_TRUE(step.applied) << step.message;
+    EXPECT_TRUE(step.near_equilibrium);
     EXPECT_EQ(step.step_fraction, 1.0);
     EXPECT_LT(step.start_residual, 1e-8);
     const DrapeResult end = solve_drape(after, h.equilibrium, tight);
@@ -76,6 +77,7 @@ TEST(PatternChange, LeavesAStartThatIsNoEquilibriumAlone) {
   const ClothModel after = lengthened(h, 1e-4);
   const PatternChangeStep flat = predict_pattern_change(before, after, h.g.V);
   EXPECT_FALSE(flat.applied);
+  EXPECT_FALSE(flat.near_equilibrium);
   EXPECT_NE(flat.message.find("not an equilibrium"), std::string::npos) << flat.message;
   EXPECT_NEAR(flat.start_residual, 1.0, 0.05);  // the whole weight
   EXPECT_EQ(flat.V, h.g.V);
