@@ -20,9 +20,9 @@
 // at the latest, not at an equilibrium. Measured and rejected for Fast (skirt, 5K triangles,
 // bench/): Gauss-Newton element Hessians (3000 iterations without converging, vs 377 for
 // exact), and reusing one factorisation for up to 10 iterations (stale damping shortens the
-// steps: 928 iterations instead of 37 on a 2K box cover). A looser stop is no cheaper either: the residual stays high
-// while folds form and then collapses quadratically (5K skirt: tolerance 1e-2 saves 40 % of the
-// iterations at 3.6 mm mean error; 3e-3 saves 1 %).
+// steps: 928 iterations instead of 37 on a 2K box cover). A looser stop is no cheaper either:
+// the residual stays high while folds form and then collapses quadratically (5K skirt:
+// tolerance 1e-2 saves 40 % of the iterations at 3.6 mm mean error; 3e-3 saves 1 %).
 #pragma once
 
 #include <functional>

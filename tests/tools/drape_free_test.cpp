@@ -30,6 +30,14 @@ std::string switched_scene(const std::string& folder, const std::string& from, c
   return folder + "/" + name;
 }
 
+// A drape-free --json run `r`: expects success and the Python `assertions` to hold of its
+// report d.
+void expect_report(const test::RunResult& r, const std::string& assertions) {
+  ASSERT_EQ(r.status, 0) << r.err << r.out;
+  const auto check = test::run("/usr/bin/python3 -c \"import json,sys; d=json.loads(sys.argv[1]); " + assertions + "\" '" + r.out + "'");
+  EXPECT_EQ(check.status, 0) << check.err;
+}
+
 // drape-free --json ARGS on folder's scene, writing folder/draped.obj; expects success, the
 // Python `assertions` to hold of its report d, and the drape written on the sample's own mesh
 // (patterns unchanged) with every pin exactly where it was and the rest draped.
@@ -37,8 +45,7 @@ void expect_drape(const std::string& folder, const std::string& args, const std:
   const std::string out = folder + "/draped.obj";
   const auto r = test::run(test::tool_path("drape-free") + " --json " + args + " " + folder + "/scene.xml -o " + out);
   ASSERT_EQ(r.status, 0) << r.err << r.out;
-  const auto check = test::run("/usr/bin/python3 -c \"import json,sys; d=json.loads(sys.argv[1]); " + assertions + "\" '" + r.out + "'");
-  EXPECT_EQ(check.status, 0) << check.err;
+  expect_report(r, assertions);
   const Garment before = read_garment(folder + "/garment.obj"), after = read_garment(out);
   EXPECT_EQ(after.P, before.P);  // the patterns travel unchanged
   EXPECT_EQ(after.F, before.F);
@@ -125,17 +132,12 @@ TEST(DrapeFree, ReDrapeStartsFromThePredictedResponseToThePatternChange) {
   write_garment(wider, folder + "/wider.obj");
   const std::string redrape = test::tool_path("drape-free") + " --json " + folder + "/scene.xml --patterns " + folder +
                               "/wider.obj --init " + drape + " -o " + folder + "/redraped.obj";
-  const auto check = [](const test::RunResult& r, const std::string& assertions) {
-    ASSERT_EQ(r.status, 0) << r.err << r.out;
-    const auto c = test::run("/usr/bin/python3 -c \"import json,sys; d=json.loads(sys.argv[1]); " + assertions + "\" '" + r.out + "'");
-    EXPECT_EQ(c.status, 0) << c.err;
-  };
-  check(test::run(redrape),
+  expect_report(test::run(redrape),
         "p=d['predictor']; assert d['converged'] and p['applied'] and p['message'] == '' and 0 < p['step_fraction'] <= 1 "
         "and p['largest_move_m'] > 0 and p['time_s'] <= d['time_s']['total'], d");
-  check(test::run(redrape + " --no-predictor"), "assert d['converged'] and 'predictor' not in d, d");
+  expect_report(test::run(redrape + " --no-predictor"), "assert d['converged'] and 'predictor' not in d, d");
   EXPECT_EQ(read_garment(folder + "/redraped.obj").P, wider.P);
-  check(test::run(test::tool_path("drape-free") + " --json " + folder + "/scene.xml --init " + drape + " -o " + folder + "/again.obj"),
+  expect_report(test::run(test::tool_path("drape-free") + " --json " + folder + "/scene.xml --init " + drape + " -o " + folder + "/again.obj"),
         "assert d['converged'] and 'predictor' not in d and d['newton_iterations'] == 0, d");
 }
 
@@ -154,12 +156,7 @@ TEST(DrapeFree, FastPresetStopsAReDrapeAtItsBudgetAndWritesIt) {
   write_garment(wider, folder + "/wider.obj");
   const std::string redrape = test::tool_path("drape-free") + " " + test::source_path("samples/skirt/scene.xml") +
                               " --preset fast --patterns " + folder + "/wider.obj --init " + drape + " -o " + folder + "/fast.obj";
-  const auto check = [](const test::RunResult& r, const std::string& assertions) {
-    ASSERT_EQ(r.status, 0) << r.err << r.out;
-    const auto c = test::run("/usr/bin/python3 -c \"import json,sys; d=json.loads(sys.argv[1]); " + assertions + "\" '" + r.out + "'");
-    EXPECT_EQ(c.status, 0) << c.err;
-  };
-  check(test::run(redrape + " --json"),
+  expect_report(test::run(redrape + " --json"),
         "assert d['stopped_at_budget'] and not d['converged'] and d['newton_iterations'] == 20 and d['residual'] > d['tolerance'] "
         "and d['predictor']['applied'] and d['moved_mean_m'] > 1e-4 and d['output'].endswith('fast.obj') "
         "and 'budget of 20 Newton iterations' in d['message'], d");
@@ -171,7 +168,7 @@ TEST(DrapeFree, FastPresetStopsAReDrapeAtItsBudgetAndWritesIt) {
   // as far as the change can tell: it keeps the budget.
   wider.P.col(0) *= 1.05;
   write_garment(wider, folder + "/wider2.obj");
-  check(test::run(test::tool_path("drape-free") + " --json " + test::source_path("samples/skirt/scene.xml") +
+  expect_report(test::run(test::tool_path("drape-free") + " --json " + test::source_path("samples/skirt/scene.xml") +
                   " --preset fast --patterns " + folder + "/wider2.obj --init " + folder + "/fast.obj -o " + folder + "/fast2.obj"),
         "assert d['stopped_at_budget'] and d['newton_iterations'] == 20, d");
   const auto human = test::run(redrape);
@@ -179,7 +176,7 @@ TEST(DrapeFree, FastPresetStopsAReDrapeAtItsBudgetAndWritesIt) {
   EXPECT_NE(human.out.find("drape-free: fast preset on a re-drape: stopped at its budget, "), std::string::npos) << human.out;
   EXPECT_NE(human.out.find("not an equilibrium"), std::string::npos) << human.out;
   const std::string flag = make_sample_folder("flag", 600);
-  check(test::run(test::tool_path("drape-free") + " --json --preset fast " + flag + "/scene.xml -o " + flag + "/fast.obj"),
+  expect_report(test::run(test::tool_path("drape-free") + " --json --preset fast " + flag + "/scene.xml -o " + flag + "/fast.obj"),
         "assert d['converged'] and not d['stopped_at_budget'] and d['newton_iterations'] > 20 and d['residual'] <= 1e-4, d");
 }
 
