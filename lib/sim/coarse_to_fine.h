@@ -10,10 +10,14 @@
 // faster at 10K and 20K triangles and 1.5 times at 54K (one path); on its grid mesh, where the
 // stress-weighted step metric made the plain cold drapes short, 1.5 times faster at 20K but 2.9
 // and 1.6 times slower at 10K and 54K. What limits it: the fine level still takes 220-550
-// Newton iterations, because carrying a drape to a coarse mesh and back squeezes the fine
-// triangles that straddle coarse creases, and repairing that alone took 100-200 iterations even
-// from the finished drape. Not for re-drapes: a start that already holds the fine drape's folds
-// would lose them on the coarse level.
+// Newton iterations. Its start is the coarse level's equilibrium, whose folds are not the fine
+// mesh's (isotropic 20K from 5K: 6.6 mm mean from where the fine level ends), and the fine level
+// settles its own folds in Newton steps of 0.1-1 mm. The fine triangles that straddle coarse
+// creases are squeezed too (to 0.8 of their pattern size), but relaxing them first
+// (as-rigid-as-possible, to 0.98) saved only 2-6 % of the fine iterations (bench/drape_bench.txt,
+// session 38); nor did more levels help, each spends 100-250 iterations on its own folds. Not
+// for re-drapes: a start that already holds the fine drape's folds would lose them on the
+// coarse level.
 //
 // Every level after the first runs without the membrane fallback (DrapeSettings::
 // membrane_fallback): the carried-over drape squeezes some fine triangles to 0.6-0.7 of their
