@@ -29,13 +29,8 @@ if [ $# -ge 1 ] && [ "$1" != "--" ]; then
 fi
 [ $# -ge 1 ] && [ "$1" = "--" ] && shift
 [[ "$paths" =~ ^[1-9][0-9]*$ ]] || { echo "cold_paths: PATHS must be a positive whole number, not '$paths'" >&2; exit 2; }
-tool=$here/build/bin/drape-free
-[ -x "$tool" ] || { echo "cold_paths: build first (./foldsketch test, or cmake --build build)" >&2; exit 2; }
-[ -f "$scene" ] || { echo "cold_paths: $scene: no such file" >&2; exit 2; }
-scene=$(realpath "$scene")
-file=$(sed -n 's/.*<garment file="\([^"]*\)".*/\1/p' "$scene" | head -1)
-[ -n "$file" ] || { echo "cold_paths: $scene: no <garment file=...>" >&2; exit 2; }
-garment=$(cd "$(dirname "$scene")" && realpath "$file")
+. "$here/bench/scene_tools.sh"
+bench_scene cold_paths "$scene"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -51,14 +46,6 @@ with open(sys.argv[1]) as src, open(sys.argv[3], "w") as dst:
             line = "v %.9f %.9f %.9f\n" % tuple(x)
         dst.write(line)' "$1" "$2" "$3"
 }
-# distance A B: mean and max vertex distance between two garment OBJs [mm].
-distance() {
-  python3 -c 'import math, sys
-def v(f): return [[float(x) for x in l.split()[1:4]] for l in open(f) if l.startswith("v ")]
-d = [math.dist(a, b) for a, b in zip(v(sys.argv[1]), v(sys.argv[2]))]
-print("%.3f %.2f" % (1000 * sum(d) / len(d), 1000 * max(d)))' "$1" "$2"
-}
-
 printf '%4s %6s %8s %14s %10s %10s %22s\n' path seed Newton factorisations seconds residual "from path 1 (mean / max)"
 rows=$work/rows
 : > "$rows"

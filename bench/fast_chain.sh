@@ -15,26 +15,14 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 scene=${1:-$here/samples/skirt/scene.xml}
 step=${2:-0.025}
 count=${3:-3}
-tool=$here/build/bin/drape-free
-[ -x "$tool" ] || { echo "fast_chain: build first (./foldsketch test, or cmake --build build)" >&2; exit 2; }
-[ -f "$scene" ] || { echo "fast_chain: $scene: no such file" >&2; exit 2; }
-scene=$(realpath "$scene")
-file=$(sed -n 's/.*<garment file="\([^"]*\)".*/\1/p' "$scene" | head -1)
-[ -n "$file" ] || { echo "fast_chain: $scene: no <garment file=...>" >&2; exit 2; }
-garment=$(cd "$(dirname "$scene")" && realpath "$file")
+. "$here/bench/scene_tools.sh"
+bench_scene fast_chain "$scene"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 # widen SRC FACTOR DST: SRC with its patterns (vt) FACTOR times as wide (u only).
 widen() {
   awk -v k="$2" '$1 == "vt" { printf "vt %.12g %s\n", $2 * k, $3; next } { print }' "$1" > "$3"
-}
-# distance A B: mean and max vertex distance between two garment OBJs [mm].
-distance() {
-  python3 -c 'import math, sys
-def v(f): return [[float(x) for x in l.split()[1:4]] for l in open(f) if l.startswith("v ")]
-d = [math.dist(a, b) for a, b in zip(v(sys.argv[1]), v(sys.argv[2]))]
-print("%.3f %.2f" % (1000 * sum(d) / len(d), 1000 * max(d)))' "$1" "$2"
 }
 # drape PRESET PATTERNS INIT OUT: prints "iterations seconds".
 drape() {
