@@ -195,9 +195,9 @@ int main(int argc, char** argv) {
                "2.2 and 1.5 times faster at 10K, 20K and 54K triangles (54K one path); on a grid mesh 1.5 times "
                "faster at 20K but 2.9 and 1.6 times slower at 10K and 54K. It ends in another "
                "equilibrium, with other folds, than the plain drape (16 and 9 mm mean apart on the isotropic skirt "
-               "at 10K and 20K; a start moved by 1 um alone ends the plain drape 0.6 and 11 mm away), and it depends far "
-               "less on its start: from starts moved by 1 um its drapes ended 0.004-0.07 mm mean apart (once 1.5 mm) on "
-               "the 10K and 20K skirts, the plain drapes 2.8-13 mm (bench/cold_paths.sh). Not for re-drapes: "
+               "at 10K and 20K; a start moved by 1 um alone ends the plain drape 0.6-2.9 and 6-13 mm away), and it "
+               "depends far less on its start: from starts moved by 1 um its drapes ended 0.004-0.07 mm mean apart "
+               "(once 1.5 mm) on the 10K and 20K skirts (bench/cold_paths.sh). Not for re-drapes: "
                "the coarse levels lose the start's folds. Not with self-contact or explicit stitches")
       ->excludes(levels_option);
   return run_tool(app, argc, argv, [&] {
