@@ -2,7 +2,7 @@
 # A cold drape over several paths: the scene's garment draped from its placement as it is, and
 # from the placement with every vertex moved by a random amount of up to 1 um per coordinate
 # (seeds 1, 2, ...). A cold drape is chaotic: 1 um moves its Newton iteration count by up to
-# 1.6 times and its end by up to 11 mm (bench/drape_bench.txt), so a change to the solver is
+# 2.3 times and its end by up to 13 mm mean (bench/drape_bench.txt), so a change to the solver is
 # judged over paths, not on one. Prints one row per path (Newton iterations, factorisations,
 # seconds, final relative residual, and the mean and max vertex distance of its drape from the
 # first path's) and the medians, all through drape-free as a user runs it. Options after `--`
