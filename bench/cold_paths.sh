@@ -57,7 +57,7 @@ for k in $(seq 1 "$paths"); do
     moved "$garment" "$seed" "$start"
   fi
   if ! "$tool" "$scene" --init "$start" -o "$work/drape$k.obj" --json "$@" > "$work/drape$k.json" 2> "$work/drape$k.err"; then
-    echo "cold_paths: path $k (seed $seed) did not converge:" >&2
+    echo "cold_paths: drape-free failed on path $k (seed $seed); it said:" >&2
     cat "$work/drape$k.err" >&2
     exit 1
   fi
