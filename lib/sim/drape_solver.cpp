@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "sim/self_contact.h"
 #include "sim/bisected_cholesky.h"
+#include "sim/stability.h"
 #include "sim/step_curvature.h"
 
 namespace foldsketch {
@@ -32,6 +33,13 @@ constexpr double kRoundoff = 1e-12;
 // then far below one step's inertial forces, and the drag and later steps absorb it. Otherwise
 // the step is halved.
 constexpr double kStepAcceptance = 1e-3;
+// Leaving a saddle (DrapeSettings::stability_check): the first try's largest vertex move [m],
+// a tenth of the 1 cm step bound (DrapeSettings::max_displacement), and the damping the solve
+// resumes with, at least: its descent then follows the gradient, which points off the saddle,
+// where a barely damped step along the unstable mode is as long as the damping is near its
+// negative curvature, and the line search would cut it many times. Our choices.
+constexpr double kSaddleEscape = 1e-3;
+constexpr double kSaddleDamping = 1.0;
 // Self-contact: one step may close at most this fraction of any cloth-cloth gap, so no layer
 // passes through another between two states (our choice: nearer 1, contact is approached in
 // fewer, riskier steps).
@@ -56,6 +64,14 @@ MatrixX3d moved_along(const MatrixX3d& x, const VectorXd& dx, const VectorXd& be
     if (bend.size() > 0) y.row(free_vertices[a]) += alpha * alpha * bend.segment<3>(i).transpose();
   }
   return y;
+}
+
+const char* to_string(Stability stability) {
+  switch (stability) {
+    case Stability::Stable: return "stable";
+    case Stability::Unstable: return "unstable";
+    default: return "not checked";
+  }
 }
 
 double residual_scale(const ClothModel& model, const ClothEnergy& energy) {
@@ -328,6 +344,27 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
     return false;
   };
 
+  // Moves x off a saddle along mode (free DOFs): the largest vertex move starts at
+  // kSaddleEscape and halves until one of the two directions lowers E below energy_at_x.
+  const auto leave_saddle = [&](MatrixX3d& y, const VectorXd& mode, double energy_at_y) {
+    double largest = 0.0;
+    for (int a = 0; a < n; ++a) largest = std::max(largest, mode.segment<3>(3 * a).norm());
+    if (!(largest > 0.0)) return false;
+    for (double move = kSaddleEscape; move >= kSaddleEscape / 1024; move *= 0.5) {
+      for (double sign : {1.0, -1.0}) {
+        MatrixX3d trial = y;
+        for (int a = 0; a < n; ++a)
+          trial.row(energy.free_vertices()[a]) += (sign * move / largest) * mode.segment<3>(3 * a).transpose();
+        if (evaluate(trial, nullptr, nullptr).total() < energy_at_y) {
+          y = std::move(trial);
+          damping = std::max(damping, kSaddleDamping);
+          return true;
+        }
+      }
+    }
+    return false;
+  };
+
   for (int iteration = 0;; ++iteration) {
     // E's gradient and Hessian at the current drape; every iteration factorises afresh.
     VectorXd g;
@@ -344,6 +381,36 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
     }
     const bool at_rest = !dynamic || stats.kinetic_energy <= settings.tolerance * work_scale;
     if (stats.residual <= tolerance && at_rest) {
+      if (!dynamic && settings.stability_check && n > 0) {
+        // Is it a minimum? The exact Hessian at x, every term exact (lib/sim/stability.h).
+        const auto t0 = Clock::now();
+        energy.evaluate(x, nullptr, &A, HessianKind::Exact, HessianKind::Exact, HessianKind::Exact);
+        stats.seconds_assembly += since(t0);
+        factor_current = false;
+        const StabilityCheck check = check_stability(energy, A, cholesky);
+        if (check.stable) {
+          stats.stability = Stability::Stable;
+        } else if (stats.saddle_escapes < settings.max_saddle_escapes && check.mode.size() > 0) {
+          if (leave_saddle(x, check.mode, stats.energy.total())) {
+            ++stats.saddle_escapes;
+            ++stats.steps;
+            report(x);
+            continue;
+          }
+        }
+        if (!check.stable) {
+          stats.stability = Stability::Unstable;
+          stats.lowest_curvature = check.lowest_eigenvalue;
+          char text[300];
+          std::snprintf(text, sizeof text,
+                        "converged to an unstable equilibrium (a saddle: curvature %.3g s^-2 along its softest mode, "
+                        "after %d escapes); a disturbed start may drape elsewhere",
+                        check.lowest_eigenvalue, stats.saddle_escapes);
+          stats.converged = true;
+          stats.message = text;
+          break;
+        }
+      }
       stats.converged = true;
       stats.message = "converged";
       break;

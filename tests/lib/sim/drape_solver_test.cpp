@@ -6,6 +6,7 @@
 
 #include "samples/grid_garment.h"
 #include "sim/drape_solver.h"
+#include "sim/stability.h"
 #include "support/test_support.h"
 
 namespace foldsketch {
@@ -71,21 +72,55 @@ TEST(DrapeSolver, MembraneFallbackLeavesStartsNearTheRestShapeAlone) {
 // mass metric the exact Hessian crawls: the damping the compressed mesh-scale wrinkles need
 // slows the whole sheet (residual 2e-5 after 1000 iterations). The Laplacian metric damps
 // those wrinkles by their wavenumber squared, as their negative curvature grows, and leaves
-// the sheet's long buckle free: measured, 29 iterations.
-TEST(DrapeSolver, LaplacianMetricLetsASqueezedSheetBuckle) {
+// the sheet's long-wavelength motion free: measured, 29 iterations to the flat equilibrium.
+// That equilibrium is a saddle (no force leaves the plane; the next test), so both solves run
+// without the stability check, which would go on to buckle it (95 iterations in all).
+TEST(DrapeSolver, LaplacianMetricLetsASqueezedSheetRelax) {
   const SqueezedSheet s = squeezed_sheet(0.95);
   ASSERT_GT(min_stretch(s.model, s.garment.V), DrapeSettings{}.membrane_fallback_stretch) << "the fallback would act";
   DrapeSettings mass;
   mass.proximal_metric = ProximalMetric::Mass;
   mass.max_steps = 300;
+  mass.stability_check = false;
   const DrapeResult crawl = solve_drape(s.model, s.garment.V, mass);
   EXPECT_FALSE(crawl.stats.converged) << "the mass metric converged: the case no longer tests the metric";
-  const DrapeResult r = solve_drape(s.model, s.garment.V, DrapeSettings{});
+  DrapeSettings laplacian;
+  laplacian.stability_check = false;
+  const DrapeResult r = solve_drape(s.model, s.garment.V, laplacian);
   ASSERT_TRUE(r.stats.converged) << r.stats.message;
   EXPECT_LE(r.stats.residual, 1e-6);
   EXPECT_LE(r.stats.newton_iterations, 60);
   EXPECT_EQ(r.stats.projected_iterations, 0);
-  EXPECT_LT(r.stats.energy.total(), crawl.stats.energy.total()) << "it buckled out of the squeeze";
+  EXPECT_LT(r.stats.energy.total(), crawl.stats.energy.total()) << "it relaxed more of the squeeze";
+  EXPECT_TRUE(r.V.allFinite());
+}
+
+// A flat sheet squeezed in its own plane feels no force out of it, so Newton's method keeps
+// it flat and converges to the compressed flat state: a saddle, which any disturbance would
+// buckle. The stability check finds the negative curvature and the solve leaves along it.
+TEST(DrapeSolver, LeavesASaddleAlongItsNegativeCurvature) {
+  const SqueezedSheet s = squeezed_sheet(0.98);
+  ASSERT_EQ(s.garment.V.col(2).cwiseAbs().maxCoeff(), 0.0) << "the sheet should start flat";
+  const auto out_of_plane = [](const MatrixX3d& V) { return V.col(2).cwiseAbs().maxCoeff(); };
+  DrapeSettings unchecked;
+  unchecked.stability_check = false;
+  const DrapeResult flat = solve_drape(s.model, s.garment.V, unchecked);
+  ASSERT_TRUE(flat.stats.converged) << flat.stats.message;
+  EXPECT_EQ(flat.stats.stability, Stability::NotChecked);
+  EXPECT_EQ(out_of_plane(flat.V), 0.0) << "no force leaves the plane: the case no longer tests a saddle";
+  ClothEnergy energy(s.model);
+  const StabilityCheck saddle = check_stability(energy, flat.V);
+  EXPECT_FALSE(saddle.stable);
+  EXPECT_LT(saddle.lowest_eigenvalue, -kNeutralCurvature);
+
+  const DrapeResult r = solve_drape(s.model, s.garment.V, DrapeSettings{});
+  ASSERT_TRUE(r.stats.converged) << r.stats.message;
+  EXPECT_EQ(r.stats.stability, Stability::Stable) << r.stats.message;
+  EXPECT_GE(r.stats.saddle_escapes, 1);
+  EXPECT_LE(r.stats.residual, 1e-6);
+  EXPECT_GT(out_of_plane(r.V), 1e-3) << "it buckled";
+  EXPECT_LT(r.stats.energy.total(), flat.stats.energy.total());
+  EXPECT_TRUE(check_stability(energy, r.V).stable);
   EXPECT_TRUE(r.V.allFinite());
 }
 
