@@ -34,15 +34,25 @@ std::string self_contact_text(const DrapeStats& s, int self_vertices) {
   return text;
 }
 
+std::string stability_text(const DrapeStats& s) {
+  switch (s.stability) {
+    case Stability::Stable: return "a stable equilibrium";
+    case Stability::Unstable: return "an UNSTABLE equilibrium";
+    default: return "stability not checked";
+  }
+}
+
 // self_vertices: drape vertices under self-contact, -1 without it.
 std::string human(const DrapeStats& s, double tolerance, int self_vertices) {
   char line[1024];
   std::snprintf(line, sizeof line,
                 "drape-free: %s: %d steps, %d Newton iterations (%d with projected membrane elements), %d factorisations; relative force residual %.2e "
                 "(tolerance %.0e, 2-norm over free vertices / weight); max strain %.3f %%; deepest body penetration "
-                "%.3f mm%s\ndrape-free: time %.2f s (assembly %.2f, factorisation %.2f, solve %.2f, curved steps %.2f, line search %.2f)\n",
+                "%.3f mm%s; %s%s\ndrape-free: time %.2f s (assembly %.2f, factorisation %.2f, solve %.2f, curved steps %.2f, line search %.2f)\n",
                 s.message.c_str(), s.steps, s.newton_iterations, s.projected_iterations, s.factorizations, s.residual, tolerance, 100 * s.max_strain,
-                1000 * s.max_penetration, self_contact_text(s, self_vertices).c_str(), s.seconds_total, s.seconds_assembly, s.seconds_factorization,
+                1000 * s.max_penetration, self_contact_text(s, self_vertices).c_str(), stability_text(s).c_str(),
+                s.saddle_escapes > 0 ? (" (after leaving " + std::to_string(s.saddle_escapes) + " saddle" + (s.saddle_escapes > 1 ? "s" : "") + ")").c_str() : "",
+                s.seconds_total, s.seconds_assembly, s.seconds_factorization,
                 s.seconds_solve, s.seconds_curvature, s.seconds_line_search);
   return line;
 }
@@ -92,7 +102,10 @@ std::string json(const DrapeStats& s, double tolerance, const std::string& outpu
                  const std::vector<DrapeLevel>& levels, const std::optional<PatternChangeStep>& predictor, double moved) {
   JsonWriter j;
   j.begin_object().key("converged").value(s.converged).key("stopped_at_budget").value(s.stopped_at_budget);
-  j.key("message").value(s.message).key("moved_mean_m").value(moved);
+  j.key("message").value(s.message).key("stability").value(to_string(s.stability));
+  j.key("saddle_escapes").value(s.saddle_escapes);
+  if (s.stability == Stability::Unstable) j.key("lowest_curvature_per_s2").value(s.lowest_curvature);
+  j.key("moved_mean_m").value(moved);
   j.key("output").value(written ? output : "").key("steps").value(s.steps).key("newton_iterations").value(s.newton_iterations);
   j.key("projected_iterations").value(s.projected_iterations);
   j.key("factorizations").value(s.factorizations).key("residual").value(s.residual).key("tolerance").value(tolerance);
@@ -134,6 +147,9 @@ int main(int argc, char** argv) {
                "Patterns and drape are both in metres: a drape on median more than 3 times larger or smaller\n"
                "than its patterns (patterns in mm or cm, texture coordinates in vt) is refused. Warns when the\n"
                "pins hold an edge more than 1.5 times its pattern length.\n"
+               "A converged static drape is checked to be a stable equilibrium (the Hessian positive definite up to\n"
+               "0.01 s^-2 times the mass); from a saddle (a symmetric start, a sheet squeezed flat) it goes on along the\n"
+               "softest mode, and says so when it cannot leave one (a warning; the drape is still written).\n"
                "Exit 1 when it does not converge (nothing written unless --write-unconverged); the fast preset's\n"
                "re-drape, stopped after its 20 Newton iterations as asked, is written (exit 0).",
                "drape-free"};
@@ -304,6 +320,8 @@ int main(int argc, char** argv) {
     std::cout << (as_json ? json(result.stats, effective_tolerance, output, write, self_vertices, levels, predictor, moved)
                           : predictor_text(predictor) + levels_text(levels) + human(result.stats, effective_tolerance, self_vertices) +
                                 budget_text(result.stats, moved));
+    if (result.stats.stability == Stability::Unstable)
+      std::fprintf(stderr, "drape-free: warning: %s: the drape is %s\n", scene_path.c_str(), result.stats.message.c_str());
     if (!result.stats.converged && !result.stats.stopped_at_budget)
       throw std::runtime_error(std::string("did not converge (") + result.stats.message + ")" +
                                (write ? "; wrote the unconverged drape as asked" : "; nothing written") +
