@@ -56,9 +56,11 @@ StabilityCheck check_stability(const ClothEnergy& energy, SparseMatrix& hessian,
     lambda = next;
     if (settled) break;
   }
+  // The refused factorisation is the proof of instability; the Rayleigh quotient is an upper
+  // bound on the lowest eigenvalue, and its vector a way out only where it curves downwards.
+  check.stable = false;
   check.lowest_eigenvalue = lambda;
-  check.stable = !(lambda < -kNeutralCurvature);
-  if (!check.stable) check.mode = v;
+  if (lambda < 0.0) check.mode = v;
   return check;
 }
 

@@ -25,9 +25,10 @@ namespace foldsketch {
 constexpr double kNeutralCurvature = 1e-2;
 
 struct StabilityCheck {
-  bool stable = true;
-  // When not stable: the most negative eigenvalue of M^-1 H [1/s^2] and its mode (3 per free
-  // DOF of energy, unit M-norm: mode^T M mode = 1 kg).
+  bool stable = true;  // H + kNeutralCurvature M factorised
+  // When not stable: the most negative eigenvalue of M^-1 H [1/s^2] as inverse iteration
+  // found it (an upper bound), and its mode (3 per free DOF of energy, unit M-norm:
+  // mode^T M mode = 1 kg), empty unless the energy curves downwards along it.
   double lowest_eigenvalue = 0;
   VectorXd mode;
   int factorizations = 0;
