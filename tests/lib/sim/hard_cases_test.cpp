@@ -37,8 +37,10 @@ Garment sheet_with_sliver_column(double sliver_width) {
   return grid_garment({p}, 1e-12);
 }
 
+// Static solves: converged to a stable equilibrium (DrapeSettings::stability_check), finite.
 void expect_converged_and_finite(const DrapeResult& r) {
   EXPECT_TRUE(r.stats.converged) << r.stats.message;
+  EXPECT_EQ(r.stats.stability, Stability::Stable) << r.stats.message;
   EXPECT_TRUE(r.V.allFinite());
 }
 
