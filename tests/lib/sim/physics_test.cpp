@@ -45,6 +45,7 @@ DrapeResult drape(const Garment& g, const Scene& scene, const std::vector<int>& 
   settings.max_steps = 3000;
   DrapeResult r = solve_drape(model, g.V, settings);
   EXPECT_TRUE(r.stats.converged) << r.stats.message << " after " << r.stats.newton_iterations << " iterations, " << r.stats.factorizations << " factorisations";
+  EXPECT_EQ(r.stats.stability, Stability::Stable) << r.stats.message;  // a minimum, not a saddle
   return r;
 }
 
