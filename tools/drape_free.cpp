@@ -34,12 +34,14 @@ std::string self_contact_text(const DrapeStats& s, int self_vertices) {
   return text;
 }
 
+// "a stable equilibrium", with the saddles left on the way when there were any.
 std::string stability_text(const DrapeStats& s) {
-  switch (s.stability) {
-    case Stability::Stable: return "a stable equilibrium";
-    case Stability::Unstable: return "an UNSTABLE equilibrium";
-    default: return "stability not checked";
-  }
+  std::string text = s.stability == Stability::Stable     ? "a stable equilibrium"
+                     : s.stability == Stability::Unstable ? "an UNSTABLE equilibrium"
+                                                          : "stability not checked";
+  if (s.saddle_escapes > 0)
+    text += " (after leaving " + std::to_string(s.saddle_escapes) + (s.saddle_escapes > 1 ? " saddles)" : " saddle)");
+  return text;
 }
 
 // self_vertices: drape vertices under self-contact, -1 without it.
@@ -48,11 +50,9 @@ std::string human(const DrapeStats& s, double tolerance, int self_vertices) {
   std::snprintf(line, sizeof line,
                 "drape-free: %s: %d steps, %d Newton iterations (%d with projected membrane elements), %d factorisations; relative force residual %.2e "
                 "(tolerance %.0e, 2-norm over free vertices / weight); max strain %.3f %%; deepest body penetration "
-                "%.3f mm%s; %s%s\ndrape-free: time %.2f s (assembly %.2f, factorisation %.2f, solve %.2f, curved steps %.2f, line search %.2f)\n",
+                "%.3f mm%s; %s\ndrape-free: time %.2f s (assembly %.2f, factorisation %.2f, solve %.2f, curved steps %.2f, line search %.2f)\n",
                 s.message.c_str(), s.steps, s.newton_iterations, s.projected_iterations, s.factorizations, s.residual, tolerance, 100 * s.max_strain,
-                1000 * s.max_penetration, self_contact_text(s, self_vertices).c_str(), stability_text(s).c_str(),
-                s.saddle_escapes > 0 ? (" (after leaving " + std::to_string(s.saddle_escapes) + " saddle" + (s.saddle_escapes > 1 ? "s" : "") + ")").c_str() : "",
-                s.seconds_total, s.seconds_assembly, s.seconds_factorization,
+                1000 * s.max_penetration, self_contact_text(s, self_vertices).c_str(), stability_text(s).c_str(), s.seconds_total, s.seconds_assembly, s.seconds_factorization,
                 s.seconds_solve, s.seconds_curvature, s.seconds_line_search);
   return line;
 }
@@ -321,7 +321,7 @@ int main(int argc, char** argv) {
                           : predictor_text(predictor) + levels_text(levels) + human(result.stats, effective_tolerance, self_vertices) +
                                 budget_text(result.stats, moved));
     if (result.stats.stability == Stability::Unstable)
-      std::fprintf(stderr, "drape-free: warning: %s: the drape is %s\n", scene_path.c_str(), result.stats.message.c_str());
+      std::fprintf(stderr, "drape-free: warning: %s: %s\n", scene_path.c_str(), result.stats.message.c_str());
     if (!result.stats.converged && !result.stats.stopped_at_budget)
       throw std::runtime_error(std::string("did not converge (") + result.stats.message + ")" +
                                (write ? "; wrote the unconverged drape as asked" : "; nothing written") +

@@ -55,6 +55,13 @@ double longest_layer_safe_step(const ClothModel& model, const MatrixX3d& x, cons
   return self_contact_step_bound(*model.self_contact, x, step, 1.0 - kSelfContactClosing);
 }
 
+// Largest move of any vertex in dx (3 per free vertex) [m].
+double largest_vertex_move(const VectorXd& dx) {
+  double largest = 0.0;
+  for (Eigen::Index a = 0; 3 * a < dx.size(); ++a) largest = std::max(largest, dx.segment<3>(3 * a).norm());
+  return largest;
+}
+
 MatrixX3d moved_along(const MatrixX3d& x, const VectorXd& dx, const VectorXd& bend, const std::vector<int>& free_vertices,
                 double alpha) {
   MatrixX3d y = x;
@@ -284,8 +291,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         factor_current = false;
         continue;
       }
-      double largest = 0.0;
-      for (int a = 0; a < n; ++a) largest = std::max(largest, dx.segment<3>(3 * a).norm());
+      double largest = largest_vertex_move(dx);
       if (model.body && largest > settings.max_displacement) {
         dx *= settings.max_displacement / largest;
         slope *= settings.max_displacement / largest;
@@ -347,14 +353,11 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   // Moves x off a saddle along mode (free DOFs): the largest vertex move starts at
   // kSaddleEscape and halves until one of the two directions lowers E below energy_at_x.
   const auto leave_saddle = [&](MatrixX3d& y, const VectorXd& mode, double energy_at_y) {
-    double largest = 0.0;
-    for (int a = 0; a < n; ++a) largest = std::max(largest, mode.segment<3>(3 * a).norm());
+    const double largest = largest_vertex_move(mode);
     if (!(largest > 0.0)) return false;
     for (double move = kSaddleEscape; move >= kSaddleEscape / 1024; move *= 0.5) {
       for (double sign : {1.0, -1.0}) {
-        MatrixX3d trial = y;
-        for (int a = 0; a < n; ++a)
-          trial.row(energy.free_vertices()[a]) += (sign * move / largest) * mode.segment<3>(3 * a).transpose();
+        MatrixX3d trial = moved_along(y, mode, VectorXd(), energy.free_vertices(), sign * move / largest);
         if (evaluate(trial, nullptr, nullptr).total() < energy_at_y) {
           y = std::move(trial);
           damping = std::max(damping, kSaddleDamping);
@@ -388,31 +391,26 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         stats.seconds_assembly += since(t0);
         factor_current = false;
         const StabilityCheck check = check_stability(energy, A, cholesky);
-        if (check.stable) {
-          stats.stability = Stability::Stable;
-        } else if (stats.saddle_escapes < settings.max_saddle_escapes && check.mode.size() > 0) {
-          if (leave_saddle(x, check.mode, stats.energy.total())) {
-            ++stats.saddle_escapes;
-            ++stats.steps;
-            report(x);
-            continue;
-          }
+        if (!check.stable && stats.saddle_escapes < settings.max_saddle_escapes && check.mode.size() > 0 &&
+            leave_saddle(x, check.mode, stats.energy.total())) {
+          ++stats.saddle_escapes;
+          ++stats.steps;
+          report(x);
+          continue;
         }
-        if (!check.stable) {
-          stats.stability = Stability::Unstable;
-          stats.lowest_curvature = check.lowest_eigenvalue;
-          char text[300];
-          std::snprintf(text, sizeof text,
-                        "converged to an unstable equilibrium (a saddle: curvature %.3g s^-2 along its softest mode, "
-                        "after %d escapes); a disturbed start may drape elsewhere",
-                        check.lowest_eigenvalue, stats.saddle_escapes);
-          stats.converged = true;
-          stats.message = text;
-          break;
-        }
+        stats.stability = check.stable ? Stability::Stable : Stability::Unstable;
+        if (!check.stable) stats.lowest_curvature = check.lowest_eigenvalue;
       }
       stats.converged = true;
       stats.message = "converged";
+      if (stats.stability == Stability::Unstable) {
+        char text[300];
+        std::snprintf(text, sizeof text,
+                      "converged to an unstable equilibrium (a saddle: curvature %.3g s^-2 along its softest mode, "
+                      "after %d escapes); a disturbed start may drape elsewhere",
+                      stats.lowest_curvature, stats.saddle_escapes);
+        stats.message = text;
+      }
       break;
     }
     if (!dynamic && settings.newton_budget > 0 && stats.newton_iterations >= settings.newton_budget) {
