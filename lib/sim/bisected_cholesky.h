@@ -19,6 +19,7 @@
 #include <Eigen/SparseCore>
 
 #include "core/types.h"
+#include "sim/sparse_cholesky.h"
 
 namespace foldsketch {
 
@@ -31,6 +32,10 @@ struct BisectedSettings {
   // Split only when the separator is at most this fraction of the unknowns (a mesh that does
   // not bisect well, e.g. a long thin strip cut across, is still fine; a dense one is not).
   double max_separator_fraction = 0.1;
+  // Single: the factorisation in single precision (about twice as fast), each solve then
+  // refined in double precision against the factorised matrix this many times.
+  FactorPrecision precision = FactorPrecision::Double;
+  int refinements = 1;
 };
 
 class BisectedCholesky {
@@ -47,6 +52,12 @@ public:
   bool factorize(const Eigen::SparseMatrix<double>& A);
   bool factorized() const;
   VectorXd solve(const VectorXd& b) const;
+  // |b - A x| / |b| of the last solve: computed only for single-precision factors (after
+  // their refinements), 0 otherwise.
+  double last_relative_residual() const { return last_relative_residual_; }
+  // Takes effect at the next factorisation; the analysis is kept.
+  void set_precision(FactorPrecision precision) { settings_.precision = precision; }
+  FactorPrecision precision() const { return settings_.precision; }
 
   bool split() const;        // factorised as two halves (else whole)
   int separator_size() const;
@@ -56,12 +67,14 @@ public:
   double solve_seconds() const { return solve_seconds_; }
 
 private:
+  VectorXd solve_once(const VectorXd& b) const;
   struct State;
   std::unique_ptr<State> state_;
   BisectedSettings settings_;
   int factorizations_ = 0;
   double analyze_seconds_ = 0, factorize_seconds_ = 0;
   mutable double solve_seconds_ = 0;
+  mutable double last_relative_residual_ = 0;
 };
 
 } // namespace foldsketch

@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "sim/cholmod_view.h"
+#include "sim/supernodal_single.h"
 
 namespace foldsketch {
 namespace {
@@ -51,6 +52,21 @@ struct SparseCholesky::State {
   // the permutation is a gather of the values.
   cholmod_sparse* permuted = nullptr;
   std::vector<long> destination;
+  // Single precision: the factor's values and the factorisation's workspace.
+  std::vector<float> single;
+  bool single_numeric = false;      // the last factorisation was in single precision
+  SupernodalWorkspace workspace;
+  SupernodalPattern pattern() const {
+    SupernodalPattern p;
+    p.n = static_cast<int>(factor->n);
+    p.supernodes = static_cast<int>(factor->nsuper);
+    p.super = static_cast<const int*>(factor->super);
+    p.row_start = static_cast<const int*>(factor->pi);
+    p.value_start = static_cast<const int*>(factor->px);
+    p.rows = static_cast<const int*>(factor->s);
+    p.values = static_cast<long>(factor->xsize);
+    return p;
+  }
   State() {
     keep_factorisation_on_this_thread();
     cholmod_start(&common);
@@ -68,7 +84,7 @@ struct SparseCholesky::State {
   }
 };
 
-SparseCholesky::SparseCholesky() : state_(std::make_unique<State>()) {}
+SparseCholesky::SparseCholesky(FactorPrecision precision) : state_(std::make_unique<State>()), precision_(precision) {}
 SparseCholesky::~SparseCholesky() = default;
 
 void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& A) { analyze_with(A, nullptr); }
@@ -103,6 +119,8 @@ void SparseCholesky::analyze_with(const Eigen::SparseMatrix<double>& A, const st
     }
   }
   if (!state_->factor) throw std::runtime_error("CHOLMOD could not analyse the system");
+  if (!state_->factor->is_super) throw std::logic_error("SparseCholesky: CHOLMOD made no supernodal analysis");
+  state_->workspace = {};
   build_permuted(A);
   state_->numeric = false;
   analyze_seconds_ += seconds_since(start);
@@ -120,11 +138,17 @@ bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& A) {
   const long* to = state_->destination.data();
   for (size_t k = 0; k < state_->destination.size(); ++k)
     if (to[k] >= 0) sx[to[k]] = ax[k];
-  double beta[2] = {0, 0};
-  cholmod_super_numeric(s, nullptr, beta, state_->factor, &state_->common);
+  state_->single_numeric = precision_ == FactorPrecision::Single;
+  if (state_->single_numeric) {
+    state_->numeric = factorize_single(state_->pattern(), static_cast<const int*>(s->p), static_cast<const int*>(s->i),
+                                       sx, state_->single, state_->workspace);
+  } else {
+    double beta[2] = {0, 0};
+    cholmod_super_numeric(s, nullptr, beta, state_->factor, &state_->common);
+    state_->numeric = state_->common.status == CHOLMOD_OK && state_->factor->minor == state_->factor->n;
+  }
   ++factorizations_;
   factorize_seconds_ += seconds_since(start);
-  state_->numeric = state_->common.status == CHOLMOD_OK && state_->factor->minor == state_->factor->n;
   return state_->numeric;
 }
 
@@ -188,7 +212,9 @@ Eigen::MatrixXd SparseCholesky::trailing_block(int m) const {
   const auto* pi = static_cast<const int*>(L.pi);
   const auto* px = static_cast<const int*>(L.px);
   const auto* rows = static_cast<const int*>(L.s);
+  const bool single = state_->single_numeric;
   const auto* x = static_cast<const double*>(L.x);
+  const float* xs = state_->single.data();
   // Supernode k holds columns super[k] .. super[k+1]-1 as a dense column-major block over its
   // row indices rows[pi[k] .. pi[k+1]-1], the diagonal block first.
   for (size_t k = 0; k < L.nsuper; ++k) {
@@ -196,8 +222,10 @@ Eigen::MatrixXd SparseCholesky::trailing_block(int m) const {
     const int row_count = pi[k + 1] - pi[k];
     for (int col = std::max(super[k], first); col < super[k + 1]; ++col) {
       const int j = col - super[k];
-      for (int r = j; r < row_count; ++r)
-        out(rows[pi[k] + r] - first, col - first) = x[px[k] + static_cast<long>(j) * row_count + r];
+      for (int r = j; r < row_count; ++r) {
+        const long at = px[k] + static_cast<long>(j) * row_count + r;
+        out(rows[pi[k] + r] - first, col - first) = single ? static_cast<double>(xs[at]) : x[at];
+      }
     }
   }
   return out;
@@ -205,6 +233,7 @@ Eigen::MatrixXd SparseCholesky::trailing_block(int m) const {
 
 VectorXd SparseCholesky::solve_system(int system, const VectorXd& b) const {
   if (!state_->numeric) throw std::logic_error("SparseCholesky::solve before a successful factorisation");
+  if (state_->single_numeric) return solve_single(system, b);
   const auto start = std::chrono::steady_clock::now();
   cholmod_dense rhs{};
   rhs.nrow = static_cast<size_t>(b.size());
@@ -217,6 +246,22 @@ VectorXd SparseCholesky::solve_system(int system, const VectorXd& b) const {
   cholmod_dense* x = cholmod_solve(system, state_->factor, &rhs, &state_->common);
   VectorXd out = Eigen::Map<VectorXd>(static_cast<double*>(x->x), b.size());
   cholmod_free_dense(&x, &state_->common);
+  solve_seconds_ += seconds_since(start);
+  return out;
+}
+
+VectorXd SparseCholesky::solve_single(int system, const VectorXd& b) const {
+  const auto start = std::chrono::steady_clock::now();
+  const SupernodalPattern p = state_->pattern();
+  const auto n = static_cast<size_t>(b.size());
+  std::vector<float> y(n);
+  const int* perm = static_cast<const int*>(state_->factor->Perm);
+  const bool permute = system == CHOLMOD_A && perm;
+  for (size_t k = 0; k < n; ++k) y[k] = static_cast<float>(b(permute ? perm[k] : static_cast<Eigen::Index>(k)));
+  if (system != CHOLMOD_Lt) solve_lower_single(p, state_->single, y.data());
+  if (system != CHOLMOD_L) solve_upper_single(p, state_->single, y.data());
+  VectorXd out(b.size());
+  for (size_t k = 0; k < n; ++k) out(permute ? perm[k] : static_cast<Eigen::Index>(k)) = y[k];
   solve_seconds_ += seconds_since(start);
   return out;
 }

@@ -16,9 +16,16 @@ namespace foldsketch {
 // thread that factorises calls it (OpenMP's setting is per thread).
 void keep_factorisation_on_this_thread();
 
+// The numeric factorisation's arithmetic. Single: this project's own supernodal factorisation
+// (sim/supernodal_single.h) on CHOLMOD's analysis, about twice as fast; its solves are good to
+// single precision, so a caller that needs more refines them (BisectedCholesky does).
+enum class FactorPrecision { Double, Single };
+
 class SparseCholesky {
 public:
-  SparseCholesky();
+  explicit SparseCholesky(FactorPrecision precision = FactorPrecision::Double);
+  // Takes effect at the next factorisation.
+  void set_precision(FactorPrecision precision) { precision_ = precision; }
   ~SparseCholesky();
   SparseCholesky(const SparseCholesky&) = delete;
   SparseCholesky& operator=(const SparseCholesky&) = delete;
@@ -47,10 +54,12 @@ public:
 
 private:
   void analyze_with(const Eigen::SparseMatrix<double>& A, const std::vector<int>* ordering);
+  VectorXd solve_single(int system, const VectorXd& b) const;
   VectorXd solve_system(int system, const VectorXd& b) const;
   void build_permuted(const Eigen::SparseMatrix<double>& A);
   struct State;
   std::unique_ptr<State> state_;
+  FactorPrecision precision_;
   int factorizations_ = 0;
   double analyze_seconds_ = 0, factorize_seconds_ = 0;
   mutable double solve_seconds_ = 0;
