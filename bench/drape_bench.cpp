@@ -165,6 +165,7 @@ int main(int argc, char** argv) {
   bool trace = false, no_reference = false, straight_steps = false, no_predictor = false;
   double time_step = DrapeSettings{}.time_step;
   std::string metric = "laplacian";
+  std::string factor = "single";
   double fallback_stretch = DrapeSettings{}.membrane_fallback_stretch;
   int fallback_iterations = DrapeSettings{}.membrane_fallback_iterations;
   std::vector<double> stress_metric;
@@ -213,6 +214,11 @@ int main(int argc, char** argv) {
   app.add_flag("--no-predictor", no_predictor,
                "warm rows: start the re-drape (and its reference) from the stored start itself, not from the pattern-change "
                "predictor's step (lib/sim/pattern_change.h), as before the predictor");
+  app.add_option("--factor", factor,
+                 "precision of the Newton systems' factorisation (DrapeSettings::factor_precision): single (the default; "
+                 "each solve refined once in double) or double (CHOLMOD's), for the timed and the reference drapes")
+      ->check(CLI::IsMember({"single", "double"}))
+      ->capture_default_str();
   app.add_flag("--straight-steps", straight_steps,
                "line searches along the straight Newton step, as before the curved steps (DrapeSettings::curved_steps), "
                "for the timed and the reference drapes");
@@ -258,6 +264,7 @@ int main(int argc, char** argv) {
   DrapeSettings defaults;  // what every drape here starts from
   defaults.proximal_metric = metric == "mass" ? ProximalMetric::Mass : ProximalMetric::Laplacian;
   defaults.curved_steps = !straight_steps;
+  defaults.factor_precision = factor == "double" ? FactorPrecision::Double : FactorPrecision::Single;
   defaults.membrane_fallback_stretch = fallback_stretch;
   defaults.membrane_fallback_iterations = fallback_iterations;
   if (stress_metric.size() == 2) defaults.stress_metric_floor = stress_metric[0], defaults.stress_metric_reference = stress_metric[1];

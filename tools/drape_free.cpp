@@ -108,7 +108,8 @@ std::string json(const DrapeStats& s, double tolerance, const std::string& outpu
   j.key("moved_mean_m").value(moved);
   j.key("output").value(written ? output : "").key("steps").value(s.steps).key("newton_iterations").value(s.newton_iterations);
   j.key("projected_iterations").value(s.projected_iterations);
-  j.key("factorizations").value(s.factorizations).key("residual").value(s.residual).key("tolerance").value(tolerance);
+  j.key("factorizations").value(s.factorizations).key("double_precision_fallback").value(s.double_precision_fallback);
+  j.key("residual").value(s.residual).key("tolerance").value(tolerance);
   j.key("energy_J").begin_object().key("membrane").value(s.energy.membrane).key("bending").value(s.energy.bending);
   j.key("gravity").value(s.energy.gravity).key("stitches").value(s.energy.stitches).key("contact").value(s.energy.contact);
   j.key("self_contact").value(s.energy.self_contact).end_object();

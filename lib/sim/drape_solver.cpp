@@ -24,6 +24,11 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 // negligible next to any fabric stiffness (a vertex mass of 1e-5 kg against 1e2 N/m), above
 // 1e12 (h = 1 us) no step is possible and the solve has failed.
 constexpr double kMinDamping = 1e-6, kMaxDamping = 1e12;
+// A Newton step from a single-precision factor (DrapeSettings::factor_precision) whose refined
+// relative residual exceeds this falls back to double precision for the rest of the solve. The
+// 20K-triangle skirt's re-drapes: at most 4e-4 (median 1e-6); the physics tests' stiff
+// membranes under light loads: 0.3-12, i.e. no solve at all.
+constexpr double kSingleSolveResidual = 1e-2;
 // Energy changes below this fraction of the summed magnitudes of the energy terms are
 // roundoff: near equilibrium the Armijo test cannot see them, and a full step that lowers the
 // force residual is taken instead.
@@ -175,7 +180,9 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   const double scale = residual_scale(model, energy);
   const double work_scale = scale * std::max(1e-3, (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm());
 
-  BisectedCholesky cholesky;
+  BisectedSettings factor_settings;
+  factor_settings.precision = settings.factor_precision;
+  BisectedCholesky cholesky(factor_settings);
   SparseMatrix A = energy.pattern();
   // Curved steps (DrapeSettings::curved_steps): static mode only, and not with self-contact,
   // whose step bound holds for the straight step.
@@ -286,6 +293,13 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
       ++stats.newton_iterations;
       if (membrane_now != membrane_kind) ++stats.projected_iterations;
       VectorXd dx = cholesky.solve(-g);
+      if (cholesky.last_relative_residual() > kSingleSolveResidual) {
+        // Too ill-conditioned for a single-precision factor: double precision from here on.
+        cholesky.set_precision(FactorPrecision::Double);
+        stats.double_precision_fallback = true;
+        factor_current = false;
+        continue;
+      }
       double slope = g.dot(dx);
       if (!(slope < 0.0)) {  // no descent (roundoff in a nearly singular factor): refactorise
         factor_current = false;
@@ -390,7 +404,10 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         energy.evaluate(x, nullptr, &A, HessianKind::Exact, HessianKind::Exact, HessianKind::Exact);
         stats.seconds_assembly += since(t0);
         factor_current = false;
+        const FactorPrecision working = cholesky.precision();
+        cholesky.set_precision(FactorPrecision::Double);
         const StabilityCheck check = check_stability(energy, A, cholesky);
+        cholesky.set_precision(working);
         if (!check.stable && stats.saddle_escapes < settings.max_saddle_escapes && check.mode.size() > 0 &&
             leave_saddle(x, check.mode, stats.energy.total())) {
           ++stats.saddle_escapes;
