@@ -9,20 +9,9 @@
 #include <cholmod.h>
 
 #include "core/error.h"
+#include "sim/blas.h"
 #include "sim/cholmod_view.h"
 #include "sim/sparse_cholesky.h"
-
-// BLAS and LAPACK (OpenBLAS on Debian, CHOLMOD's own): the separator's dense products and
-// factorisation. Fortran calling convention; the trailing lengths are the hidden lengths of the
-// character arguments.
-extern "C" {
-void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
-            const int* lda, const double* beta, double* c, const int* ldc, size_t, size_t);
-void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info, size_t);
-void ssyrk_(const char* uplo, const char* trans, const int* n, const int* k, const float* alpha, const float* a,
-            const int* lda, const float* beta, float* c, const int* ldc, size_t, size_t);
-void spotrf_(const char* uplo, const int* n, float* a, const int* lda, int* info, size_t);
-}
 
 namespace foldsketch {
 namespace {
@@ -178,7 +167,6 @@ bool BisectedCholesky::factorize(const Eigen::SparseMatrix<double>& A) {
   st.numeric = false;
   const double* values = A.valuePtr();
   const int s = static_cast<int>(st.separator.size());
-  const bool single = st.single;
   // Each half: its values, its factorisation, and its separator block's product L22 L22^T.
   const auto work = [&](Half& h, Eigen::MatrixXd& product) {
     double* m = h.M.valuePtr();
@@ -186,7 +174,7 @@ bool BisectedCholesky::factorize(const Eigen::SparseMatrix<double>& A) {
     if (!h.cholesky.factorize(h.M)) return false;
     h.L22 = h.cholesky.trailing_block(s);
     const char lower = 'L', no = 'N';
-    if (single) {  // as precise as the halves' factors, at twice the speed
+    if (st.single) {  // as precise as the halves' factors, at twice the speed
       const Eigen::MatrixXf L22 = h.L22.cast<float>();
       Eigen::MatrixXf p = Eigen::MatrixXf::Zero(s, s);
       const float one = 1.0f, zero = 0.0f;
@@ -224,7 +212,7 @@ bool BisectedCholesky::factorize(const Eigen::SparseMatrix<double>& A) {
     for (const auto& [q, r, c] : st.separator_values) st.schur(r, c) -= values[q];
     const char lower = 'L';
     int info = 0;
-    if (single) {
+    if (st.single) {
       Eigen::MatrixXf schur = st.schur.cast<float>();
       spotrf_(&lower, &s, schur.data(), &s, &info, 1);
       st.schur = schur.cast<double>();

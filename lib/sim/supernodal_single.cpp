@@ -3,23 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 
-// Single-precision BLAS and LAPACK (OpenBLAS on Debian), Fortran calling convention; the
-// trailing lengths are the hidden lengths of the character arguments.
-extern "C" {
-void ssyrk_(const char* uplo, const char* trans, const int* n, const int* k, const float* alpha, const float* a,
-            const int* lda, const float* beta, float* c, const int* ldc, size_t, size_t);
-void sgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k, const float* alpha,
-            const float* a, const int* lda, const float* b, const int* ldb, const float* beta, float* c,
-            const int* ldc, size_t, size_t);
-void spotrf_(const char* uplo, const int* n, float* a, const int* lda, int* info, size_t);
-void strsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m, const int* n,
-            const float* alpha, const float* a, const int* lda, float* b, const int* ldb, size_t, size_t, size_t,
-            size_t);
-void strsv_(const char* uplo, const char* trans, const char* diag, const int* n, const float* a, const int* lda,
-            float* x, const int* incx, size_t, size_t, size_t);
-void sgemv_(const char* trans, const int* m, const int* n, const float* alpha, const float* a, const int* lda,
-            const float* x, const int* incx, const float* beta, float* y, const int* incy, size_t);
-}
+#include "sim/blas.h"
 
 namespace foldsketch {
 namespace {
