@@ -404,10 +404,7 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         energy.evaluate(x, nullptr, &A, HessianKind::Exact, HessianKind::Exact, HessianKind::Exact);
         stats.seconds_assembly += since(t0);
         factor_current = false;
-        const FactorPrecision working = cholesky.precision();
-        cholesky.set_precision(FactorPrecision::Double);
         const StabilityCheck check = check_stability(energy, A, cholesky);
-        cholesky.set_precision(working);
         if (!check.stable && stats.saddle_escapes < settings.max_saddle_escapes && check.mode.size() > 0 &&
             leave_saddle(x, check.mode, stats.energy.total())) {
           ++stats.saddle_escapes;

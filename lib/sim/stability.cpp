@@ -16,7 +16,8 @@ constexpr double kShiftGrowth = 4.0, kLargestShift = 1e12;
 
 } // namespace
 
-StabilityCheck check_stability(const ClothEnergy& energy, SparseMatrix& hessian, BisectedCholesky& cholesky) {
+namespace {
+StabilityCheck check_in_double(const ClothEnergy& energy, SparseMatrix& hessian, BisectedCholesky& cholesky) {
   StabilityCheck check;
   const VectorXd& mass = energy.free_mass();
   if (mass.size() == 0) return check;
@@ -62,6 +63,19 @@ StabilityCheck check_stability(const ClothEnergy& energy, SparseMatrix& hessian,
   check.lowest_eigenvalue = lambda;
   if (lambda < 0.0) check.mode = v;
   return check;
+}
+} // namespace
+
+StabilityCheck check_stability(const ClothEnergy& energy, SparseMatrix& hessian, BisectedCholesky& cholesky) {
+  // The verdict in double precision: a single-precision Cholesky can refuse a positive definite
+  // matrix once its condition number passes about 1e7 (DrapeSettings::factor_precision).
+  struct Restore {
+    BisectedCholesky& cholesky;
+    FactorPrecision precision;
+    ~Restore() { cholesky.set_precision(precision); }
+  } restore{cholesky, cholesky.precision()};
+  cholesky.set_precision(FactorPrecision::Double);
+  return check_in_double(energy, hessian, cholesky);
 }
 
 StabilityCheck check_stability(ClothEnergy& energy, const MatrixX3d& x) {

@@ -36,7 +36,8 @@ struct StabilityCheck {
 
 // The stability of drape x: hessian must hold energy's exact Hessian at x (every term exact;
 // pattern as energy.pattern()), and cholesky an analysis of that pattern. hessian is left
-// shifted by some multiple of the mass.
+// shifted by some multiple of the mass. The factorisations are in double precision whatever
+// cholesky's precision; it is left as it was.
 StabilityCheck check_stability(const ClothEnergy& energy, SparseMatrix& hessian, BisectedCholesky& cholesky);
 
 // The same for a drape on its own: prepares energy at x (self-contact's pattern), evaluates
