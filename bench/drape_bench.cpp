@@ -333,8 +333,10 @@ int main(int argc, char** argv) {
   // predictor's), added to every run's and every trajectory point's time. `redrape`: the start
   // is a re-drape from near an equilibrium (the predictor's force test, PatternChangeStep::
   // near_equilibrium), so the presets solve with redrape_settings, as drape-free's do.
+  // `factorisation`: the predictor's, whose analysis the solves reuse as drape-free's do.
   const auto time_presets = [&](const char* start_name, const ClothModel& model, const MatrixX3d& start,
-                                const DrapeResult* reference, double head_start = 0.0, bool redrape = false) {
+                                const DrapeResult* reference, double head_start = 0.0, bool redrape = false,
+                                BisectedCholesky* factorisation = nullptr) {
     Timed timed{{}, start};
     bool have_accurate = false;
     for (const SolverPreset preset : {SolverPreset::Accurate, SolverPreset::Fast}) {
@@ -363,7 +365,7 @@ int main(int argc, char** argv) {
           along.push_back({s.newton_iterations, head_start + s.seconds_total, s.residual, error_mm(x, reference->V),
                            error_mm(x, previous).mean, s.damping, s.step_fraction});
           previous = x;
-        });
+        }, factorisation);
         seconds.push_back(head_start + result.stats.seconds_total);
       }
       std::optional<ErrorMm> error;
@@ -550,8 +552,11 @@ int main(int argc, char** argv) {
         // (lib/sim/pattern_change.h) unless --no-predictor; its time counts in every row.
         PatternChangeStep predicted;
         predicted.V = start;
+        BisectedCholesky factorisation;  // the predictor's analysis, reused by the timed re-drapes
         if (!no_predictor) {
-          predicted = predict_pattern_change(model, wider_model, start);
+          PatternChangeSettings change;
+          change.factor_precision = defaults.factor_precision;
+          predicted = predict_pattern_change(model, wider_model, start, change, &factorisation);
           std::printf("%9s predictor: %s, %.3f of the step, largest move %.2f mm, %.3f s (residual %.2e, %.2e with the new "
                       "patterns)\n", "", predicted.applied ? "applied" : predicted.message.c_str(), predicted.step_fraction,
                       1e3 * predicted.step_length, predicted.seconds, predicted.start_residual, predicted.change_residual);
@@ -561,7 +566,7 @@ int main(int argc, char** argv) {
         // Every start's solves go to the trajectory CSV, as warm, warm2, warm3 (the plot draws warm).
         const std::string warm_name = i == 0 ? "warm" : "warm" + std::to_string(i + 1);
         const Timed timed = time_presets(warm_name.c_str(), wider_model, predicted.V, wider_reference ? &*wider_reference : nullptr,
-                                         predicted.seconds, predicted.near_equilibrium);
+                                         predicted.seconds, predicted.near_equilibrium, &factorisation);
         if (wider_reference) {
           start_errors.push_back(error_mm(start, wider_reference->V));
           print_start_row(triangles, start_errors.back());

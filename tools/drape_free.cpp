@@ -299,14 +299,16 @@ int main(int argc, char** argv) {
       result.stats.seconds_total = c2f.seconds_total;  // every level's time
     } else {
       MatrixX3d start = garment.V;
+      BisectedCholesky factorisation;  // the predictor's analysis is the re-drape's
       if (init_model) {
         PatternChangeSettings change;
         change.max_displacement = settings.max_displacement;
-        predictor = predict_pattern_change(*init_model, model, start, change);
+        change.factor_precision = settings.factor_precision;
+        predictor = predict_pattern_change(*init_model, model, start, change, &factorisation);
         start = predictor->V;
         if (predictor->near_equilibrium) settings = redrape_settings(settings);
       }
-      result = solve_drape(model, start, settings, progress);
+      result = solve_drape(model, start, settings, progress, &factorisation);
       if (predictor) result.stats.seconds_total += predictor->seconds;
       moved = (result.V - start).rowwise().norm().mean();
     }

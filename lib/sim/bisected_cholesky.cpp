@@ -31,6 +31,7 @@ struct BisectedCholesky::State {
   cholmod_common common{};
   bool analysed = false;
   Eigen::Index nonzeros = 0;        // of the analysed pattern
+  std::vector<int> outer, inner;    // the analysed pattern (compressed columns)
   bool split = false;
   bool numeric = false;
   bool single = false;              // the factorisation in force is single precision
@@ -59,6 +60,8 @@ void BisectedCholesky::analyze(const Eigen::SparseMatrix<double>& A) {
   st.split = false;
   st.analysed = true;
   st.nonzeros = A.nonZeros();
+  st.outer.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
+  st.inner.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
   st.matrix = Eigen::SparseMatrix<double>();  // another pattern: copied whole at the next single factorisation
   const int n = static_cast<int>(A.rows());
   const bool two_cores = std::thread::hardware_concurrency() >= 2;
@@ -141,6 +144,14 @@ void BisectedCholesky::analyze(const Eigen::SparseMatrix<double>& A) {
     h.cholesky.analyze(h.M, ordering);
   }
   analyze_seconds_ += seconds_since(start);
+}
+
+bool BisectedCholesky::analysed_for(const Eigen::SparseMatrix<double>& A) const {
+  const State& st = *state_;
+  return st.analysed && A.isCompressed() && A.nonZeros() == st.nonzeros &&
+         static_cast<size_t>(A.outerSize()) + 1 == st.outer.size() &&
+         std::equal(st.outer.begin(), st.outer.end(), A.outerIndexPtr()) &&
+         std::equal(st.inner.begin(), st.inner.end(), A.innerIndexPtr());
 }
 
 bool BisectedCholesky::factorize(const Eigen::SparseMatrix<double>& A) {

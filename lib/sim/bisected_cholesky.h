@@ -23,6 +23,13 @@
 
 namespace foldsketch {
 
+// A solve from a single-precision factor whose refined relative residual
+// (BisectedCholesky::last_relative_residual) exceeds this is not to be trusted: its callers
+// then factorise in double precision instead. The 20K-triangle skirt's re-drapes: at most 4e-4
+// (median 1e-6); the physics tests' stiff membranes under light loads: 0.3-12, i.e. no solve
+// at all.
+constexpr double kSingleSolveResidual = 1e-2;
+
 struct BisectedSettings {
   // Below this many unknowns, one factorisation on one thread. The skirt drapes measured with
   // and without the split (same Newton iterations): 480 triangles (about 750 unknowns) even,
@@ -48,6 +55,9 @@ public:
   // Symbolic analysis of A's pattern (symmetric; full or lower storage, the lower triangle is
   // read), the bisection included. Called again only when the pattern changes.
   void analyze(const Eigen::SparseMatrix<double>& A);
+  // Whether the analysis in force is of A's pattern (false before any analysis). A caller that
+  // is handed an analysed factorisation asks before reusing it.
+  bool analysed_for(const Eigen::SparseMatrix<double>& A) const;
   // Numeric factorisation; false when A is not positive definite.
   bool factorize(const Eigen::SparseMatrix<double>& A);
   bool factorized() const;

@@ -24,11 +24,6 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 // negligible next to any fabric stiffness (a vertex mass of 1e-5 kg against 1e2 N/m), above
 // 1e12 (h = 1 us) no step is possible and the solve has failed.
 constexpr double kMinDamping = 1e-6, kMaxDamping = 1e12;
-// A Newton step from a single-precision factor (DrapeSettings::factor_precision) whose refined
-// relative residual exceeds this falls back to double precision for the rest of the solve. The
-// 20K-triangle skirt's re-drapes: at most 4e-4 (median 1e-6); the physics tests' stiff
-// membranes under light loads: 0.3-12, i.e. no solve at all.
-constexpr double kSingleSolveResidual = 1e-2;
 // Energy changes below this fraction of the summed magnitudes of the energy terms are
 // roundoff: near equilibrium the Armijo test cannot see them, and a full step that lowers the
 // force residual is taken instead.
@@ -158,7 +153,7 @@ double stopping_tolerance(const DrapeSettings& settings) {
 }
 
 DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const DrapeSettings& settings,
-                        const DrapeProgress& progress) {
+                        const DrapeProgress& progress, BisectedCholesky* factorisation) {
   const auto start = Clock::now();
   if (initial.rows() != model.vertex_count) throw ArgumentError("solve_drape: initial drape has the wrong number of vertices");
   if (!initial.allFinite()) throw ArgumentError("solve_drape: the initial drape has NaN or Inf coordinates");
@@ -182,7 +177,14 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
 
   BisectedSettings factor_settings;
   factor_settings.precision = settings.factor_precision;
-  BisectedCholesky cholesky(factor_settings);
+  BisectedCholesky own_factorisation(factor_settings);
+  BisectedCholesky& cholesky = factorisation ? *factorisation : own_factorisation;
+  cholesky.set_precision(settings.factor_precision);
+  // A handed-in factorisation's counts and times so far are not this solve's.
+  const int factorizations_before = cholesky.factorizations();
+  const double factor_seconds_before = cholesky.factorize_seconds() + cholesky.analyze_seconds();
+  const double solve_seconds_before = cholesky.solve_seconds();
+  bool pattern_checked = false;  // a handed-in analysis is reused only for the same pattern
   SparseMatrix A = energy.pattern();
   // Curved steps (DrapeSettings::curved_steps): static mode only, and not with self-contact,
   // whose step bound holds for the straight step.
@@ -246,7 +248,9 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   // E's gradient and Hessian at y, with the Hessian pattern grown for self-contact first (and
   // the factorisation's analysis redone when it grew).
   const auto assemble = [&](const MatrixX3d& y, VectorXd* grad) {
-    if (energy.prepare(y)) cholesky.analyze(energy.pattern());
+    const bool grew = energy.prepare(y);
+    if (grew || (!pattern_checked && n > 0 && !cholesky.analysed_for(energy.pattern()))) cholesky.analyze(energy.pattern());
+    pattern_checked = true;
     factor_current = false;
     return evaluate(y, grad, &A);
   };
@@ -255,9 +259,9 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
     return std::isfinite(value) ? value : std::numeric_limits<double>::infinity();
   };
   const auto report = [&](const MatrixX3d& drape) {
-    stats.factorizations = cholesky.factorizations();
-    stats.seconds_factorization = cholesky.factorize_seconds() + cholesky.analyze_seconds();
-    stats.seconds_solve = cholesky.solve_seconds();
+    stats.factorizations = cholesky.factorizations() - factorizations_before;
+    stats.seconds_factorization = cholesky.factorize_seconds() + cholesky.analyze_seconds() - factor_seconds_before;
+    stats.seconds_solve = cholesky.solve_seconds() - solve_seconds_before;
     stats.seconds_total = since(start);
     if (progress) progress(stats, drape);
   };

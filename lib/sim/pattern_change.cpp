@@ -21,7 +21,7 @@ bool same_garment(const ClothModel& a, const ClothModel& b) {
 } // namespace
 
 PatternChangeStep predict_pattern_change(const ClothModel& before, const ClothModel& after, const MatrixX3d& x0,
-                                         const PatternChangeSettings& settings) {
+                                         const PatternChangeSettings& settings, BisectedCholesky* factorisation) {
   const auto start = std::chrono::steady_clock::now();
   if (!same_garment(before, after)) throw ArgumentError("predict_pattern_change: the two models are not the same garment");
   if (x0.rows() != after.vertex_count || !x0.allFinite())
@@ -53,9 +53,20 @@ PatternChangeStep predict_pattern_change(const ClothModel& before, const ClothMo
     return done("the start is not an equilibrium of its patterns (or the patterns did not change)");
   step.near_equilibrium = true;
 
-  BisectedCholesky cholesky;
-  if (!cholesky.factorize(H)) return done("the start is not a stable equilibrium of its patterns (indefinite Hessian)");
-  VectorXd dx = cholesky.solve(-g);
+  BisectedCholesky own_factorisation;
+  BisectedCholesky& cholesky = factorisation ? *factorisation : own_factorisation;
+  if (!cholesky.analysed_for(H)) cholesky.analyze(H);
+  cholesky.set_precision(settings.factor_precision);
+  bool definite = cholesky.factorize(H);
+  VectorXd dx;
+  if (definite) dx = cholesky.solve(-g);
+  if (settings.factor_precision == FactorPrecision::Single && (!definite || cholesky.last_relative_residual() > kSingleSolveResidual)) {
+    // Too ill-conditioned for single precision (or refused by it): the same in double.
+    cholesky.set_precision(FactorPrecision::Double);
+    definite = cholesky.factorize(H);
+    if (definite) dx = cholesky.solve(-g);
+  }
+  if (!definite) return done("the start is not a stable equilibrium of its patterns (indefinite Hessian)");
   double largest = 0.0;
   for (int a = 0; a < n; ++a) largest = std::max(largest, dx.segment<3>(3 * a).norm());
   if (!std::isfinite(largest)) return done("the predicted step is not finite");

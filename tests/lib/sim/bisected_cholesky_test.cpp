@@ -75,5 +75,28 @@ TEST(BisectedCholesky, LeavesASmallSystemWhole) {
   EXPECT_LT((A * small.solve(b) - b).norm(), 1e-10 * b.norm());
 }
 
+// analysed_for tells a caller handed an analysed factorisation whether it fits its matrix: the
+// same pattern with other values does, another pattern (one more coupling) does not.
+TEST(BisectedCholesky, KnowsWhichPatternItAnalysed) {
+  const Eigen::SparseMatrix<double> A = grid_system(20, 15, 25.0, 4);
+  BisectedCholesky split(always_split());
+  EXPECT_FALSE(split.analysed_for(A));
+  split.analyze(A);
+  EXPECT_TRUE(split.analysed_for(A));
+  Eigen::SparseMatrix<double> scaled = 2.0 * A;
+  scaled.makeCompressed();
+  EXPECT_TRUE(split.analysed_for(scaled));
+  Eigen::SparseMatrix<double> coupled = A;
+  const int far = static_cast<int>(A.rows()) - 1;
+  coupled.coeffRef(far, 0) += 1e-3;
+  coupled.coeffRef(0, far) += 1e-3;
+  coupled.makeCompressed();
+  ASSERT_NE(coupled.nonZeros(), A.nonZeros());
+  EXPECT_FALSE(split.analysed_for(coupled));
+  split.analyze(coupled);
+  EXPECT_TRUE(split.analysed_for(coupled));
+  EXPECT_FALSE(split.analysed_for(A));
+}
+
 } // namespace
 } // namespace foldsketch

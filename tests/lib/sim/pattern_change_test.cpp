@@ -109,6 +109,52 @@ TEST(PatternChange, AnExtremeGatheringGivesAFiniteStartThatDrapes) {
   EXPECT_TRUE(end.stats.converged) << end.stats.message;
 }
 
+// drape-free's re-drape: the predictor factorises where the solve then factorises, so the
+// solve reuses the predictor's analysis. It ends where a solve with its own factorisation ends,
+// and reports only its own factorisations. The solve's precision is its settings' whatever the
+// predictor left (here double, single for the solve).
+TEST(PatternChange, HandsItsAnalysisToTheReDrape) {
+  const Hanging h = hanging_sheet();
+  Garment own = h.g;
+  own.V = h.equilibrium;
+  const ClothModel before = test::cotton_model(own, h.pinned);
+  const ClothModel after = lengthened(h, 0.004);
+  BisectedCholesky shared;  // as the solve's own (the sheet is small enough to be factorised whole)
+  PatternChangeSettings change;
+  change.factor_precision = FactorPrecision::Double;
+  const PatternChangeStep step = predict_pattern_change(before, after, h.equilibrium, change, &shared);
+  ASSERT_TRUE(step.applied) << step.message;
+  EXPECT_EQ(shared.factorizations(), 1);
+  EXPECT_EQ(shared.precision(), FactorPrecision::Double);
+  const double analysis = shared.analyze_seconds();
+  EXPECT_GT(analysis, 0.0);
+
+  DrapeSettings settings;
+  settings.tolerance = 1e-10;
+  const DrapeResult alone = solve_drape(after, step.V, settings);
+  const DrapeResult reused = solve_drape(after, step.V, settings, {}, &shared);
+  ASSERT_TRUE(alone.stats.converged && reused.stats.converged);
+  EXPECT_EQ(shared.analyze_seconds(), analysis);  // not analysed again
+  EXPECT_EQ(shared.precision(), reused.stats.double_precision_fallback ? FactorPrecision::Double : settings.factor_precision);
+  EXPECT_EQ(reused.stats.factorizations, alone.stats.factorizations);
+  EXPECT_EQ(shared.factorizations(), 1 + reused.stats.factorizations);
+  EXPECT_EQ(reused.stats.newton_iterations, alone.stats.newton_iterations);
+  EXPECT_LT((reused.V - alone.V).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+// A factorisation analysed for another pattern is analysed again before the solve uses it.
+TEST(PatternChange, ReDrapeReanalysesAFactorisationOfAnotherPattern) {
+  const Hanging h = hanging_sheet();
+  const ClothModel after = lengthened(h, 0.004);
+  BisectedCholesky other;
+  other.analyze(ClothEnergy(test::cotton_model(test::square_panel(6, 0.3), {})).pattern());
+  const DrapeResult alone = solve_drape(after, h.equilibrium, DrapeSettings{});
+  const DrapeResult reused = solve_drape(after, h.equilibrium, DrapeSettings{}, {}, &other);
+  ASSERT_TRUE(alone.stats.converged && reused.stats.converged) << reused.stats.message;
+  EXPECT_EQ(reused.stats.newton_iterations, alone.stats.newton_iterations);
+  EXPECT_LT((reused.V - alone.V).cwiseAbs().maxCoeff(), 1e-12);
+}
+
 TEST(PatternChange, RefusesModelsOfTwoGarments) {
   const Hanging h = hanging_sheet();
   const ClothModel before = test::cotton_model(h.g, h.pinned);
