@@ -6,9 +6,12 @@
 // (SparseCholesky).
 //
 // Left-looking, as CHOLMOD's own (Ng and Peyton 1993): supernode s gathers A's columns, takes
-// the updates of every earlier supernode whose rows reach its columns (one SYRK/GEMM each,
-// scattered through a row map), then factorises its diagonal block (POTRF) and solves its
-// off-diagonal rows (TRSM).
+// the updates of every earlier supernode whose rows reach its columns (one SYRK/GEMM each, or
+// our own loop for a small one, scattered into s's rows), then factorises its diagonal block
+// (POTRF) and solves its off-diagonal rows (TRSM), or for a narrow supernode both at once in
+// our own loop. Which updates there are, in which order, and where each of A's values and each
+// update's rows go depends on the pattern alone: the first factorisation of a pattern plans
+// that once (SupernodalWorkspace), the later ones follow the plan.
 #pragma once
 
 #include <vector>
@@ -28,10 +31,23 @@ struct SupernodalPattern {
   long values = 0;
 };
 
-// Workspace kept between factorisations of one pattern.
+// One supernode's update of a later one: rows first .. of supernode `source` (its rows that
+// fall in the target's columns first: `inside` of them, `below` in all) times their own
+// transpose, subtracted from the target's rows relative[at .. at+below-1].
+struct SupernodalUpdate {
+  int source = 0, first = 0, inside = 0, below = 0;
+  long at = 0;
+};
+
+// The factorisation's plan, made at the first factorisation of a pattern and kept for the
+// later ones (everything in it follows from the pattern alone): where each of A's values goes
+// in L, and every update in the order it is applied. Empty: not made yet.
 struct SupernodalWorkspace {
-  std::vector<int> row_map, column_supernode, head, next, position;
-  std::vector<float> update;
+  std::vector<long> target;            // per stored value of A: its offset in L
+  std::vector<int> update_start;       // per supernode: its updates, update_start[s] .. [s+1]-1
+  std::vector<SupernodalUpdate> updates;
+  std::vector<int> relative;           // per update, per row: the row's place in the target's rows
+  std::vector<float> product;          // one update's product, the largest one's size
 };
 
 // Factorises the lower triangle of P A P^T (compressed columns, rows sorted, each column's
