@@ -13,13 +13,15 @@ const float kOne = 1.0f, kZero = 0.0f, kMinusOne = -1.0f;
 const int kUnitStride = 1;
 
 // Below these sizes our own loops beat a BLAS or LAPACK call, whose fixed cost (argument
-// checks, buffer management, a lock) is about a microsecond. An update of at most
-// kLoopUpdate multiply-adds is computed and scattered in one pass; a supernode of at most
-// kLoopColumns columns (half of the 20K skirt's supernodes have 3 or 4) is factorised,
-// diagonal block and the rows below together, by a plain left-looking Cholesky. On the 20K
-// skirt's Newton matrix, as two halves on two cores, against BLAS and LAPACK for all: 0.88
-// of the time with both (our choice among 1024-8192 and 8-32), 0.92 with the loops for the
-// updates alone, 0.97 for the supernodes alone (bench/drape_bench.txt, session 41).
+// checks, buffer management, a lock that the two halves' threads contend for) is about a
+// microsecond. An update of at most kLoopUpdate multiply-adds is computed and scattered in one
+// pass; a supernode of at most kLoopColumns columns (half of the 20K skirt's supernodes have 3
+// or 4) is factorised, diagonal block and the rows below together, by a plain left-looking
+// Cholesky, and its triangular solves are plain loops instead of TRSV and GEMV. On the 20K
+// skirt's Newton matrix, as two halves on two cores, against BLAS and LAPACK for all:
+// factorisations 0.88 of the time (our choice among 1024-8192 and 8-32; 0.92 with the update
+// loops alone, 0.97 with the supernode loop alone), solves 0.70 (0.86-0.88 with 4-8 columns,
+// 0.70 with 32). bench/drape_bench.txt, session 41.
 constexpr long kLoopUpdate = 2048;
 constexpr int kLoopColumns = 16;
 
@@ -160,6 +162,18 @@ void solve_lower_single(const SupernodalPattern& p, const std::vector<float>& L,
     const int k1 = p.super[s], columns = p.super[s + 1] - k1;
     const int first_row = p.row_start[s], rows = p.row_start[s + 1] - first_row, rest = rows - columns;
     const float* block = L.data() + p.value_start[s];
+    if (columns <= kLoopColumns) {
+      const int* row = p.rows + first_row;
+      float* own = x + k1;
+      for (int j = 0; j < columns; ++j) {
+        const float* column = block + static_cast<ptrdiff_t>(j) * rows;
+        const float xj = own[j] / column[j];
+        own[j] = xj;
+        for (int i = j + 1; i < columns; ++i) own[i] -= column[i] * xj;
+        for (int i = columns; i < rows; ++i) x[row[i]] -= column[i] * xj;
+      }
+      continue;
+    }
     strsv_(&kLower, &kNo, &kNo, &columns, block, &rows, x + k1, &kUnitStride, 1, 1, 1);
     if (rest == 0) continue;
     below.assign(static_cast<size_t>(rest), 0.0f);
@@ -175,6 +189,18 @@ void solve_upper_single(const SupernodalPattern& p, const std::vector<float>& L,
     const int k1 = p.super[s], columns = p.super[s + 1] - k1;
     const int first_row = p.row_start[s], rows = p.row_start[s + 1] - first_row, rest = rows - columns;
     const float* block = L.data() + p.value_start[s];
+    if (columns <= kLoopColumns) {
+      const int* row = p.rows + first_row;
+      float* own = x + k1;
+      for (int j = columns - 1; j >= 0; --j) {
+        const float* column = block + static_cast<ptrdiff_t>(j) * rows;
+        float sum = own[j];
+        for (int i = j + 1; i < columns; ++i) sum -= column[i] * own[i];
+        for (int i = columns; i < rows; ++i) sum -= column[i] * x[row[i]];
+        own[j] = sum / column[j];
+      }
+      continue;
+    }
     if (rest > 0) {
       below.resize(static_cast<size_t>(rest));
       for (int i = 0; i < rest; ++i) below[static_cast<size_t>(i)] = x[p.rows[first_row + columns + i]];

@@ -23,9 +23,9 @@ VectorXd smooth_rhs(Eigen::Index n) {
   return b;
 }
 
-// The 30 x 20 grid's 1800 unknowns take every path of the factorisation: 454 updates by our
-// loops and 167 by SYRK / GEMM, 225 supernodes factorised by our panel loop and 24 by POTRF /
-// TRSM (counted once, instrumented).
+// The 30 x 20 grid's 1800 unknowns take every path of the factorisation and the solves: 454
+// updates by our loops and 167 by SYRK / GEMM, 225 supernodes factorised and solved with by our
+// loops and 24 by POTRF / TRSM and TRSV / GEMV (counted once, instrumented).
 TEST(SupernodalSingle, FactorsWhatCholmodFactorsToSinglePrecision) {
   const Eigen::SparseMatrix<double> A = grid_system(30, 20, 25.0, 11);
   const VectorXd b = smooth_rhs(A.rows());
