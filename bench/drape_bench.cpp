@@ -445,7 +445,7 @@ int main(int argc, char** argv) {
     for (int r = 0; r < runs; ++r) {
       text += (r ? "\n          run " : "run ") + std::to_string(r + 1) + ":";
       const CoarseToFineResult c2f =
-          solve_drape_coarse_to_fine(sample.garment, sample.scene, &body, model, perturbed(sample.garment.V, 1e-6, static_cast<unsigned>(r + 1)),
+          solve_drape_coarse_to_fine(sample.garment, sample.scene, model, perturbed(sample.garment.V, 1e-6, static_cast<unsigned>(r + 1)),
                                      timed_settings(SolverPreset::Accurate), levels, trace ? tracer : DrapeProgress{});
       for (size_t level = 0; level < c2f.levels.size(); ++level) {
         const DrapeStats& d = c2f.levels[level].stats;
@@ -541,7 +541,7 @@ int main(int argc, char** argv) {
       }
       Garment wider = sample.garment;
       wider.P.col(0) *= 1.0 + ease;
-      const ClothModel wider_model = cloth_model(wider, sample.scene, &body, pinned);
+      const ClothModel wider_model = cloth_model_on(wider, sample.scene, model.body, pinned);
       table_header(title);
       std::vector<std::pair<std::string, std::vector<Summary>>> per_preset;  // over the starts
       std::vector<ErrorMm> start_errors;

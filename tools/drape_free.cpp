@@ -258,7 +258,7 @@ int main(int argc, char** argv) {
       Garment before = garment;
       before.P = *init_patterns;
       try {
-        init_model = cloth_model(before, scene, body ? &*body : nullptr, pinned);
+        init_model = cloth_model_on(before, scene, model.body, pinned);
       } catch (const ArgumentError& e) {
         throw InputError(init_path, 0, std::string("its patterns: ") + e.what());
       }
@@ -290,7 +290,7 @@ int main(int argc, char** argv) {
     if (!coarse_levels_asked.empty()) {
       CoarseToFineResult c2f;
       try {
-        c2f = solve_drape_coarse_to_fine(garment, scene, body ? &*body : nullptr, model, garment.V, settings, coarse_levels_asked, progress);
+        c2f = solve_drape_coarse_to_fine(garment, scene, model, garment.V, settings, coarse_levels_asked, progress);
       } catch (const ArgumentError& e) {
         throw InputError(scene_path, 0, e.what());
       }

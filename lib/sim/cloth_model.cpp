@@ -75,6 +75,13 @@ SelfContactModel self_contact_model(const ClothModel& m, const ClothParams& para
 
 ClothModel cloth_model(const Garment& g, const Scene& scene, const TriangleMesh* body, const std::vector<int>& pinned,
                        const ClothParams& params) {
+  std::shared_ptr<const BodyDistance> distance;
+  if (scene.physics.body_contact && body) distance = std::make_shared<const BodyDistance>(*body);
+  return cloth_model_on(g, scene, std::move(distance), pinned, params);
+}
+
+ClothModel cloth_model_on(const Garment& g, const Scene& scene, std::shared_ptr<const BodyDistance> body,
+                          const std::vector<int>& pinned, const ClothParams& params) {
   if (const std::string error = garment_structure_error(g); !error.empty()) throw ArgumentError("cloth_model: " + error);
   // Said plainly rather than silently simulated without: these terms are not built yet.
   if (scene.physics.friction) throw ArgumentError("the scene asks for friction, which the engine does not model yet");
@@ -127,7 +134,7 @@ ClothModel cloth_model(const Garment& g, const Scene& scene, const TriangleMesh*
   m.pins = pins_at(g.V, pinned);
   if (scene.physics.body_contact) {
     if (body == nullptr) throw ArgumentError("cloth_model: the scene asks for body contact but no body was given");
-    m.body.emplace(*body);
+    m.body = std::move(body);
     m.contact_thickness = scene.body ? scene.body->thickness : 0.0;
     m.contact_stiffness = params.contact_stiffness;
   }

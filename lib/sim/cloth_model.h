@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,7 +60,10 @@ struct ClothModel {
   double stitch_stiffness = 0;                   // [N/m]
   Vector3d gravity = Vector3d::Zero();           // [m/s^2]
   std::vector<Pin> pins;                         // held exactly (their DOFs are eliminated)
-  std::optional<BodyDistance> body;              // only when the scene asks for body contact
+  // Only when the scene asks for body contact. Shared by the models of one garment on one body
+  // (a re-drape's old and new patterns, coarse-to-fine levels): built once, 0.08-0.1 s for the
+  // 47K-triangle sample body.
+  std::shared_ptr<const BodyDistance> body;
   std::optional<SelfContactModel> self_contact;  // only when the scene asks for self-contact
   double contact_thickness = 0;                  // [m]
   double contact_stiffness = 0;                  // [N/m^3]
@@ -72,6 +76,9 @@ struct ClothModel {
 // shape) are an error naming the first one.
 ClothModel cloth_model(const Garment& g, const Scene& scene, const TriangleMesh* body, const std::vector<int>& pinned,
                        const ClothParams& params = {});
+// The same on a body whose distance structure is already built (another model's `body`).
+ClothModel cloth_model_on(const Garment& g, const Scene& scene, std::shared_ptr<const BodyDistance> body,
+                          const std::vector<int>& pinned, const ClothParams& params = {});
 
 // Drape vertices selected by the scene's pins, for garment drape V (sorted, unique). Throws
 // ArgumentError when a pin names a vertex V does not have.

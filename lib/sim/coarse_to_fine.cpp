@@ -18,8 +18,8 @@ std::vector<int> coarse_levels(int triangles, const CoarseToFineSettings& settin
   return levels;
 }
 
-CoarseToFineResult solve_drape_coarse_to_fine(const Garment& garment, const Scene& scene, const TriangleMesh* body,
-                                              const ClothModel& model, const MatrixX3d& initial, const DrapeSettings& settings,
+CoarseToFineResult solve_drape_coarse_to_fine(const Garment& garment, const Scene& scene, const ClothModel& model,
+                                              const MatrixX3d& initial, const DrapeSettings& settings,
                                               const std::vector<int>& level_triangles, const DrapeProgress& progress) {
   const auto start = std::chrono::steady_clock::now();
   if (scene.physics.self_contact)
@@ -52,7 +52,7 @@ CoarseToFineResult solve_drape_coarse_to_fine(const Garment& garment, const Scen
     if (!model.pins.empty() && pinned.empty())
       throw ArgumentError("coarse-to-fine draping: no vertex of the " + std::to_string(level_triangles[level]) +
                           "-triangle level falls on a pin");
-    const ClothModel coarse_model = cloth_model(coarse, scene, body, pinned);
+    const ClothModel coarse_model = cloth_model_on(coarse, scene, model.body, pinned);
     const MatrixX3d from = level > 0 ? transfer_drape(previous, previous_drape, coarse) : coarse.V;
     DrapeResult drape = solve_drape(coarse_model, from, level > 0 ? finer_settings : settings, progress);
     out.levels.push_back({static_cast<int>(coarse_model.triangles.size()), drape.stats});

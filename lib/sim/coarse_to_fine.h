@@ -69,14 +69,14 @@ struct CoarseToFineResult {
   double seconds_total = 0;        // all levels, remeshing and carrying over included
 };
 
-// Drapes `model` (built from `garment` and `scene` with `body`) from `initial` through coarse
-// levels of level_triangles triangles (coarsest first). Coarse levels are pinned where the
-// scene's pin boxes select, and at the model's pinned vertices that the coarse outline keeps.
-// progress is called for every level's steps (with that level's drape). Throws ArgumentError
-// for a garment the coarse meshing refuses (explicit stitches), a scene with self-contact, or
-// pins that no coarse vertex takes.
-CoarseToFineResult solve_drape_coarse_to_fine(const Garment& garment, const Scene& scene, const TriangleMesh* body,
-                                              const ClothModel& model, const MatrixX3d& initial, const DrapeSettings& settings,
+// Drapes `model` (built from `garment` and `scene`; its body's distance structure serves every
+// level) from `initial` through coarse levels of level_triangles triangles (coarsest first).
+// Coarse levels are pinned where the scene's pin boxes select, and at the model's pinned
+// vertices that the coarse outline keeps. progress is called for every level's steps (with
+// that level's drape). Throws ArgumentError for a garment the coarse meshing refuses (explicit
+// stitches), a scene with self-contact, or pins that no coarse vertex takes.
+CoarseToFineResult solve_drape_coarse_to_fine(const Garment& garment, const Scene& scene, const ClothModel& model,
+                                              const MatrixX3d& initial, const DrapeSettings& settings,
                                               const std::vector<int>& level_triangles, const DrapeProgress& progress = {});
 
 } // namespace foldsketch

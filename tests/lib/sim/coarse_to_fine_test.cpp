@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "formats/body_mesh.h"
 #include "support/test_support.h"
 
 namespace foldsketch {
@@ -20,9 +19,8 @@ TEST(CoarseLevels, QuarterTheTrianglesDownToTheSmallestLevel) {
 // at the same standard as a plain drape (the tolerance, pins exact, clear of the body).
 TEST(CoarseToFine, DrapesTheSkirtThroughACoarseLevel) {
   const test::SkirtOnBody s = test::skirt_on_body(3000);
-  const TriangleMesh human = read_body_mesh(test::source_path("samples/bodies/mean_all.obj"));
   const DrapeSettings settings;
-  const CoarseToFineResult r = solve_drape_coarse_to_fine(s.skirt.garment, s.skirt.scene, &human, s.model,
+  const CoarseToFineResult r = solve_drape_coarse_to_fine(s.skirt.garment, s.skirt.scene, s.model,
                                                           s.skirt.garment.V, settings, {800});
   ASSERT_EQ(r.levels.size(), 2u);
   EXPECT_NEAR(r.levels[0].triangles, 800, 200);
@@ -38,7 +36,7 @@ TEST(CoarseToFine, DrapesTheSkirtThroughACoarseLevel) {
 TEST(CoarseToFine, RefusesSelfContact) {
   test::SkirtOnBody s = test::skirt_on_body(1000);
   s.skirt.scene.physics.self_contact = true;
-  EXPECT_THROW(solve_drape_coarse_to_fine(s.skirt.garment, s.skirt.scene, nullptr, s.model, s.skirt.garment.V, {}, {300}),
+  EXPECT_THROW(solve_drape_coarse_to_fine(s.skirt.garment, s.skirt.scene, s.model, s.skirt.garment.V, {}, {300}),
                ArgumentError);
 }
 
