@@ -241,6 +241,7 @@ VectorXd BisectedCholesky::solve(const VectorXd& b) const {
   // refinement against the double-precision matrix multiplies it by about as much again.
   VectorXd x = solve_once(b);
   last_relative_residual_ = 0;
+  last_solve_trusted_ = true;
   if (!state_->single) return x;
   const auto A = state_->matrix.selfadjointView<Eigen::Lower>();
   VectorXd r = b - A * x;
@@ -250,6 +251,7 @@ VectorXd BisectedCholesky::solve(const VectorXd& b) const {
   }
   const double scale = b.norm();
   last_relative_residual_ = scale > 0 ? r.norm() / scale : r.norm();
+  last_solve_trusted_ = last_relative_residual_ <= kSingleSolveResidual && b.dot(x) > 0.0;
   return x;
 }
 

@@ -23,11 +23,10 @@
 
 namespace foldsketch {
 
-// A solve from a single-precision factor whose refined relative residual
-// (BisectedCholesky::last_relative_residual) exceeds this is not to be trusted: its callers
-// then factorise in double precision instead. The 20K-triangle skirt's re-drapes: at most 4e-4
-// (median 1e-6); the physics tests' stiff membranes under light loads: 0.3-12, i.e. no solve
-// at all.
+// A solve from a single-precision factor whose refined relative residual exceeds this is not
+// to be trusted (BisectedCholesky::last_solve_trusted). The 20K-triangle skirt's re-drapes: at
+// most 4e-4 (median 1e-6); the physics tests' stiff membranes under light loads: 0.3-12, i.e.
+// no solve at all.
 constexpr double kSingleSolveResidual = 1e-2;
 
 struct BisectedSettings {
@@ -65,6 +64,12 @@ public:
   // |b - A x| / |b| of the last solve: computed only for single-precision factors (after
   // their refinements), 0 otherwise.
   double last_relative_residual() const { return last_relative_residual_; }
+  // Whether the last solve can be used: false for a single-precision one whose refined residual
+  // exceeds kSingleSolveResidual, or which does not even point along its right-hand side (b^T x
+  // <= 0, impossible for a positive definite A: the stiff catenary strip's Newton step once did
+  // so at a refined residual of 0.0096). Its callers then factorise in double precision.
+  // Always true in double precision.
+  bool last_solve_trusted() const { return last_solve_trusted_; }
   // Takes effect at the next factorisation; the analysis is kept.
   void set_precision(FactorPrecision precision) { settings_.precision = precision; }
   FactorPrecision precision() const { return settings_.precision; }
@@ -85,6 +90,7 @@ private:
   double analyze_seconds_ = 0, factorize_seconds_ = 0;
   mutable double solve_seconds_ = 0;
   mutable double last_relative_residual_ = 0;
+  mutable bool last_solve_trusted_ = true;
 };
 
 } // namespace foldsketch

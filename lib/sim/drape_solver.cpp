@@ -297,17 +297,14 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
       ++stats.newton_iterations;
       if (membrane_now != membrane_kind) ++stats.projected_iterations;
       VectorXd dx = cholesky.solve(-g);
-      double slope = g.dot(dx);
-      const bool single = cholesky.precision() == FactorPrecision::Single;
-      if (single && (cholesky.last_relative_residual() > kSingleSolveResidual || !(slope < 0.0))) {
-        // Too ill-conditioned for a single-precision factor (its step misses, or does not even
-        // descend, as the stiff catenary strip's once did at a refined residual of 0.0096): double
-        // precision from here on.
+      if (!cholesky.last_solve_trusted()) {
+        // Too ill-conditioned for a single-precision factor: double precision from here on.
         cholesky.set_precision(FactorPrecision::Double);
         stats.double_precision_fallback = true;
         factor_current = false;
         continue;
       }
+      double slope = g.dot(dx);
       if (!(slope < 0.0)) {  // no descent (roundoff in a nearly singular factor): refactorise
         factor_current = false;
         continue;

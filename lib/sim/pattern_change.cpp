@@ -60,10 +60,9 @@ PatternChangeStep predict_pattern_change(const ClothModel& before, const ClothMo
   bool definite = cholesky.factorize(H);
   VectorXd dx;
   if (definite) dx = cholesky.solve(-g);
-  if (settings.factor_precision == FactorPrecision::Single &&
-      (!definite || cholesky.last_relative_residual() > kSingleSolveResidual || !(g.dot(dx) < 0.0))) {
-    // Too ill-conditioned for single precision (refused, missed, or not even descending, as
-    // the solver judges its steps): the same in double.
+  if (settings.factor_precision == FactorPrecision::Single && (!definite || !cholesky.last_solve_trusted())) {
+    // Too ill-conditioned for single precision (refused, or a solve not to be trusted): the
+    // same in double.
     cholesky.set_precision(FactorPrecision::Double);
     definite = cholesky.factorize(H);
     if (definite) dx = cholesky.solve(-g);

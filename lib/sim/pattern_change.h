@@ -38,7 +38,7 @@ struct PatternChangeSettings {
   double max_force_ratio = 0.1;
   double max_displacement = 0.01;  // [m], as DrapeSettings::max_displacement
   // The old Hessian's factorisation, as DrapeSettings::factor_precision; a single-precision
-  // solve that misses (kSingleSolveResidual) or does not descend is redone in double.
+  // solve not to be trusted (BisectedCholesky::last_solve_trusted) is redone in double.
   FactorPrecision factor_precision = FactorPrecision::Single;
 };
 
