@@ -33,15 +33,14 @@ void make_plan(const SupernodalPattern& p, const int* column_start, const int* r
   size_t largest = 0;
   for (int s = 0; s < p.supernodes; ++s) {
     for (int j = p.super[s]; j < p.super[s + 1]; ++j) column_supernode[static_cast<size_t>(j)] = s;
-    const auto rows = static_cast<size_t>(p.row_start[s + 1] - p.row_start[s]);
+    const auto rows = static_cast<size_t>(p.row_count(s));
     largest = std::max(largest, rows * rows);
   }
   // Supernode s has had its columns factorised down to row offset `from` of its rows: queue it
   // on the supernode that holds its next row, which it updates next.
   const auto queue = [&](int s, int from) {
-    const int first = p.row_start[s];
-    if (from >= p.row_start[s + 1] - first) return;
-    const int target = column_supernode[static_cast<size_t>(p.rows[first + from])];
+    if (from >= p.row_count(s)) return;
+    const int target = column_supernode[static_cast<size_t>(p.rows_of(s)[from])];
     position[static_cast<size_t>(s)] = from;
     next[static_cast<size_t>(s)] = head[static_cast<size_t>(target)];
     head[static_cast<size_t>(target)] = s;
@@ -51,9 +50,9 @@ void make_plan(const SupernodalPattern& p, const int* column_start, const int* r
   w.updates.clear();
   w.relative.clear();
   for (int s = 0; s < p.supernodes; ++s) {
-    const int k1 = p.super[s], k2 = p.super[s + 1];
-    const int first_row = p.row_start[s], rows = p.row_start[s + 1] - first_row;
-    for (int i = 0; i < rows; ++i) row_map[static_cast<size_t>(p.rows[first_row + i])] = i;
+    const int k1 = p.super[s], k2 = p.super[s + 1], rows = p.row_count(s);
+    const int* row = p.rows_of(s);
+    for (int i = 0; i < rows; ++i) row_map[static_cast<size_t>(row[i])] = i;
     for (int j = k1; j < k2; ++j)
       for (int q = column_start[j]; q < column_start[j + 1]; ++q)
         w.target[static_cast<size_t>(q)] = p.value_start[s] + static_cast<long>(j - k1) * rows + row_map[static_cast<size_t>(row_index[q])];
@@ -61,12 +60,13 @@ void make_plan(const SupernodalPattern& p, const int* column_start, const int* r
     int d = head[static_cast<size_t>(s)];
     while (d >= 0) {
       const int after = next[static_cast<size_t>(d)];
-      const int d_first = p.row_start[d], d_rows = p.row_start[d + 1] - d_first;
+      const int d_rows = p.row_count(d);
+      const int* d_row = p.rows_of(d);
       const int p1 = position[static_cast<size_t>(d)];
       int p2 = p1;
-      while (p2 < d_rows && p.rows[d_first + p2] < k2) ++p2;
+      while (p2 < d_rows && d_row[p2] < k2) ++p2;
       w.updates.push_back({d, p1, p2 - p1, d_rows - p1, static_cast<long>(w.relative.size())});
-      for (int i = p1; i < d_rows; ++i) w.relative.push_back(row_map[static_cast<size_t>(p.rows[d_first + i])]);
+      for (int i = p1; i < d_rows; ++i) w.relative.push_back(row_map[static_cast<size_t>(d_row[i])]);
       queue(d, p2);
       d = after;
     }
@@ -102,8 +102,7 @@ bool factorize_single(const SupernodalPattern& p, const int* column_start, const
   if (w.update_start.size() != static_cast<size_t>(p.supernodes) + 1) make_plan(p, column_start, row_index, w);
   L.resize(static_cast<size_t>(p.values));
   for (int s = 0; s < p.supernodes; ++s) {
-    const int columns = p.super[s + 1] - p.super[s];
-    const int rows = p.row_start[s + 1] - p.row_start[s];
+    const int columns = p.column_count(s), rows = p.row_count(s);
     float* block = L.data() + p.value_start[s];
     // A's columns, into the zeroed block (while it is in cache).
     std::fill(block, block + static_cast<ptrdiff_t>(rows) * columns, 0.0f);
@@ -113,7 +112,7 @@ bool factorize_single(const SupernodalPattern& p, const int* column_start, const
     for (int u = w.update_start[static_cast<size_t>(s)]; u < w.update_start[static_cast<size_t>(s) + 1]; ++u) {
       const SupernodalUpdate& up = w.updates[static_cast<size_t>(u)];
       const int d = up.source, inside = up.inside, below = up.below;
-      const int d_rows = p.row_start[d + 1] - p.row_start[d], d_columns = p.super[d + 1] - p.super[d];
+      const int d_rows = p.row_count(d), d_columns = p.column_count(d);
       const float* Ld = L.data() + p.value_start[d] + up.first;
       const int* to = w.relative.data() + up.at;
       if (static_cast<long>(inside) * below * d_columns <= kLoopUpdate) {
@@ -159,12 +158,11 @@ bool factorize_single(const SupernodalPattern& p, const int* column_start, const
 void solve_lower_single(const SupernodalPattern& p, const std::vector<float>& L, float* x) {
   std::vector<float> below;
   for (int s = 0; s < p.supernodes; ++s) {
-    const int k1 = p.super[s], columns = p.super[s + 1] - k1;
-    const int first_row = p.row_start[s], rows = p.row_start[s + 1] - first_row, rest = rows - columns;
+    const int columns = p.column_count(s), rows = p.row_count(s), rest = rows - columns;
+    const int* row = p.rows_of(s);
     const float* block = L.data() + p.value_start[s];
+    float* own = x + p.super[s];
     if (columns <= kLoopColumns) {
-      const int* row = p.rows + first_row;
-      float* own = x + k1;
       for (int j = 0; j < columns; ++j) {
         const float* column = block + static_cast<ptrdiff_t>(j) * rows;
         const float xj = own[j] / column[j];
@@ -174,24 +172,22 @@ void solve_lower_single(const SupernodalPattern& p, const std::vector<float>& L,
       }
       continue;
     }
-    strsv_(&kLower, &kNo, &kNo, &columns, block, &rows, x + k1, &kUnitStride, 1, 1, 1);
+    strsv_(&kLower, &kNo, &kNo, &columns, block, &rows, own, &kUnitStride, 1, 1, 1);
     if (rest == 0) continue;
     below.assign(static_cast<size_t>(rest), 0.0f);
-    sgemv_(&kNo, &rest, &columns, &kOne, block + columns, &rows, x + k1, &kUnitStride, &kZero, below.data(),
-           &kUnitStride, 1);
-    for (int i = 0; i < rest; ++i) x[p.rows[first_row + columns + i]] -= below[static_cast<size_t>(i)];
+    sgemv_(&kNo, &rest, &columns, &kOne, block + columns, &rows, own, &kUnitStride, &kZero, below.data(), &kUnitStride, 1);
+    for (int i = 0; i < rest; ++i) x[row[columns + i]] -= below[static_cast<size_t>(i)];
   }
 }
 
 void solve_upper_single(const SupernodalPattern& p, const std::vector<float>& L, float* x) {
   std::vector<float> below;
   for (int s = p.supernodes - 1; s >= 0; --s) {
-    const int k1 = p.super[s], columns = p.super[s + 1] - k1;
-    const int first_row = p.row_start[s], rows = p.row_start[s + 1] - first_row, rest = rows - columns;
+    const int columns = p.column_count(s), rows = p.row_count(s), rest = rows - columns;
+    const int* row = p.rows_of(s);
     const float* block = L.data() + p.value_start[s];
+    float* own = x + p.super[s];
     if (columns <= kLoopColumns) {
-      const int* row = p.rows + first_row;
-      float* own = x + k1;
       for (int j = columns - 1; j >= 0; --j) {
         const float* column = block + static_cast<ptrdiff_t>(j) * rows;
         float sum = own[j];
@@ -203,11 +199,11 @@ void solve_upper_single(const SupernodalPattern& p, const std::vector<float>& L,
     }
     if (rest > 0) {
       below.resize(static_cast<size_t>(rest));
-      for (int i = 0; i < rest; ++i) below[static_cast<size_t>(i)] = x[p.rows[first_row + columns + i]];
-      sgemv_(&kTransposed, &rest, &columns, &kMinusOne, block + columns, &rows, below.data(), &kUnitStride, &kOne,
-             x + k1, &kUnitStride, 1);
+      for (int i = 0; i < rest; ++i) below[static_cast<size_t>(i)] = x[row[columns + i]];
+      sgemv_(&kTransposed, &rest, &columns, &kMinusOne, block + columns, &rows, below.data(), &kUnitStride, &kOne, own,
+             &kUnitStride, 1);
     }
-    strsv_(&kLower, &kTransposed, &kNo, &columns, block, &rows, x + k1, &kUnitStride, 1, 1, 1);
+    strsv_(&kLower, &kTransposed, &kNo, &columns, block, &rows, own, &kUnitStride, 1, 1, 1);
   }
 }
 

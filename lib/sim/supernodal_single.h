@@ -29,6 +29,10 @@ struct SupernodalPattern {
   const int* value_start = nullptr;
   const int* rows = nullptr;
   long values = 0;
+  // Supernode s's column and row counts and its rows (its own columns' first).
+  int column_count(int s) const { return super[s + 1] - super[s]; }
+  int row_count(int s) const { return row_start[s + 1] - row_start[s]; }
+  const int* rows_of(int s) const { return rows + row_start[s]; }
 };
 
 // One supernode's update of a later one: rows first .. of supernode `source` (its rows that
