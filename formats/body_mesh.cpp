@@ -1,19 +1,42 @@
 #include "body_mesh.h"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include "atomic_file.h"
+#include "body_obj.h"
 #include "core/error.h"
 #include "text_numbers.h"
 
 namespace foldsketch {
 
+namespace {
+
+bool has_obj_extension(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension == ".obj";
+}
+
+} // namespace
+
 TriangleMesh read_body_mesh(const std::string& path) {
   if (!std::filesystem::exists(path)) throw InputError(path, 0, "no such file");
+  if (has_obj_extension(path)) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in) throw InputError(path, 0, "read error");
+    if (std::optional<TriangleMesh> mesh = parse_body_obj(text.view(), path)) return std::move(*mesh);
+  }
   Assimp::Importer importer;
   // Drop normals, texture coordinates and colours before welding, so vertices at the same
   // position weld even where the file splits them for shading.
