@@ -208,9 +208,9 @@ int main(int argc, char** argv) {
   app.add_flag("--coarse-to-fine", coarse_to_fine,
                "for a cold drape (from a placement): drape the patterns remeshed coarser first (a quarter of the "
                "triangles per level, none under 2000), each level from the one before, the garment's own mesh last. "
-               "Measured on the benchmark skirt (bench/drape_bench.txt): on the samples' isotropic meshing 1.1, "
-               "2.2 and 1.5 times faster at 10K, 20K and 54K triangles (54K one path); on a grid mesh 1.5 times "
-               "faster at 20K but 2.9 and 1.6 times slower at 10K and 54K. It ends in another "
+               "Measured on the benchmark skirt (bench/drape_bench.txt): on the samples' isotropic meshing 1.6 and "
+               "2.8 times faster at 10K and 20K triangles, as fast at 54K (one path); on a grid mesh 1.5 times "
+               "faster at 20K but 3.1 times slower at 10K and 54K. It ends in another "
                "equilibrium, with other folds, than the plain drape (16 and 9 mm mean apart on the isotropic skirt "
                "at 10K and 20K; a start moved by 1 um alone ends the plain drape 0.6-2.9 and 6-13 mm away), and it "
                "depends far less on its start: from starts moved by 1 um its drapes ended 0.004-0.07 mm mean apart "

@@ -6,10 +6,10 @@
 // 20K grid skirt's mean distance to its end is still 2 mm after 289 of 363 iterations,
 // bench/drape_bench.txt), and on a coarse mesh an iteration costs a fraction. The fine level
 // then starts from the coarse folds. Measured on the benchmark skirt, 3 paths each (bench/
-// drape_bench.txt, session 31): on its isotropic mesh (the samples' meshing) 1.1 and 2.2 times
-// faster at 10K and 20K triangles and 1.5 times at 54K (one path); on its grid mesh, where the
-// stress-weighted step metric made the plain cold drapes short, 1.5 times faster at 20K but 2.9
-// and 1.6 times slower at 10K and 54K. What limits it: the fine level still takes 220-550
+// drape_bench.txt, session 42): on its isotropic mesh (the samples' meshing) 1.6 and 2.8 times
+// faster at 10K and 20K triangles and as fast at 54K (one path; 1.5 times in session 31); on
+// its grid mesh, where the stress-weighted step metric made the plain cold drapes short, 1.5
+// times faster at 20K but 3.1 times slower at 10K and 54K. What limits it: the fine level still takes 190-560
 // Newton iterations. Its start is the coarse level's equilibrium, whose folds are not the fine
 // mesh's (isotropic 20K from 5K: 6.6 mm mean from where the fine level ends), and the fine level
 // settles its own folds in Newton steps of 0.1-1 mm. The fine triangles that straddle coarse
