@@ -139,6 +139,7 @@ std::string json(const DrapeStats& s, double tolerance, const std::string& outpu
 } // namespace foldsketch
 
 int main(int argc, char** argv) {
+  foldsketch::restart_with_huge_pages(argv);
   using namespace foldsketch;
   CLI::App app{"Reads a scene.xml (garment, body, material, pins, solver settings), takes the rest shape from the\n"
                "patterns (vt of --patterns, default the scene's garment) and the start from an initial drape\n"
