@@ -5,9 +5,6 @@
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "core/error.h"
 #include "formats/body_mesh.h"
 #include "support/test_support.h"
@@ -37,16 +34,9 @@ TriangleMesh assimp_mesh(const std::string& path) {
   return m;
 }
 
-std::string file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 TEST(BodyObj, ReadsTheRealBodyAsAssimpDoes) {
   const std::string path = test::source_path("samples/bodies/mean_all.obj");
-  const std::optional<TriangleMesh> ours = parse_body_obj(file_text(path), path);
+  const std::optional<TriangleMesh> ours = parse_body_obj(test::read_text(path), path);
   ASSERT_TRUE(ours);
   const TriangleMesh theirs = assimp_mesh(path);
   EXPECT_EQ(ours->F, theirs.F);  // the same triangles over the same vertex numbering
@@ -91,7 +81,7 @@ TEST(BodyObj, SplitsQuadrilateralsAsAssimpDoes) {
                    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
                    "v 2 0 0\nv 4 0 0\nv 3 3 0\nv 3 1 0\n"
                    "f 1 2 3 4\nf 5 6 7 8\n");
-  const std::optional<TriangleMesh> ours = parse_body_obj(file_text(folder + "/quads.obj"), folder + "/quads.obj");
+  const std::optional<TriangleMesh> ours = parse_body_obj(test::read_text(folder + "/quads.obj"), folder + "/quads.obj");
   ASSERT_TRUE(ours);
   const TriangleMesh theirs = assimp_mesh(folder + "/quads.obj");
   EXPECT_EQ(ours->V, theirs.V);
@@ -107,7 +97,7 @@ TEST(BodyObj, SplitsQuadrilateralsAsAssimpDoes) {
 TEST(BodyObj, LeavesPolygonsToAssimp) {
   const std::string folder = test::temp_folder();
   test::write_text(folder + "/pentagon.obj", "v 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 2 0\nv -1 1 0\nf 1 2 3 4 5\n");
-  EXPECT_FALSE(parse_body_obj(file_text(folder + "/pentagon.obj"), "pentagon.obj"));
+  EXPECT_FALSE(parse_body_obj(test::read_text(folder + "/pentagon.obj"), "pentagon.obj"));
   const TriangleMesh m = read_body_mesh(folder + "/pentagon.obj");
   EXPECT_EQ(m.V.rows(), 5);
   EXPECT_EQ(m.F.rows(), 3);
