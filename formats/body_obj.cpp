@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -10,6 +9,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "text_numbers.h"
 
 namespace foldsketch {
 namespace {
@@ -85,13 +85,9 @@ std::optional<TriangleMesh> parse_body_obj(std::string_view text, const std::str
     if (keyword == "v") {
       Position p;
       for (float& x : p) {
-        const std::string_view token = tokens.next();
-        double value = 0.0;
-        const char* first = token.data() + (!token.empty() && token.front() == '+');
-        const auto [last, ec] = std::from_chars(first, token.data() + token.size(), value);
-        if (token.empty() || ec != std::errc() || last != token.data() + token.size())
-          throw InputError(path, line_number, "a vertex needs three numbers (x y z)");
-        x = static_cast<float>(value);
+        const std::optional<double> value = parse_double(tokens.next());
+        if (!value) throw InputError(path, line_number, "a vertex needs three numbers (x y z)");
+        x = static_cast<float>(*value);
         if (!std::isfinite(x))
           throw InputError(path, line_number,
                            "vertex " + std::to_string(positions.size() + 1) + " has a NaN or Inf coordinate");
@@ -103,13 +99,10 @@ std::optional<TriangleMesh> parse_body_obj(std::string_view text, const std::str
       for (std::string_view token = tokens.next(); !token.empty(); token = tokens.next()) {
         if (token.front() == '#') break;
         if (face.corners == 4) return std::nullopt;  // a polygon: assimp triangulates those
-        const std::string_view index_text = token.substr(0, token.find('/'));
-        long long index = 0;
-        const auto [last, ec] = std::from_chars(index_text.data(), index_text.data() + index_text.size(), index);
-        if (index_text.empty() || ec != std::errc() || last != index_text.data() + index_text.size() || index == 0)
-          throw InputError(path, line_number, "'" + std::string(token) + "' is not a vertex index");
+        const std::optional<long long> index = parse_integer(token.substr(0, token.find('/')));
+        if (!index || *index == 0) throw InputError(path, line_number, "'" + std::string(token) + "' is not a vertex index");
         // Negative indices count back from the last v line read so far.
-        face.v[face.corners++] = index > 0 ? index - 1 : static_cast<long long>(positions.size()) + index;
+        face.v[face.corners++] = *index > 0 ? *index - 1 : static_cast<long long>(positions.size()) + *index;
       }
       if (face.corners < 3) throw InputError(path, line_number, "a face needs at least three vertices");
       faces.push_back(face);
