@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -12,6 +10,7 @@
 
 #include "atomic_file.h"
 #include "body_obj.h"
+#include "text_file.h"
 #include "core/error.h"
 #include "text_numbers.h"
 
@@ -31,11 +30,7 @@ bool has_obj_extension(const std::string& path) {
 TriangleMesh read_body_mesh(const std::string& path) {
   if (!std::filesystem::exists(path)) throw InputError(path, 0, "no such file");
   if (has_obj_extension(path)) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in) throw InputError(path, 0, "read error");
-    if (std::optional<TriangleMesh> mesh = parse_body_obj(text.view(), path)) return std::move(*mesh);
+    if (std::optional<TriangleMesh> mesh = parse_body_obj(read_text_file(path), path)) return std::move(*mesh);
   }
   Assimp::Importer importer;
   // Drop normals, texture coordinates and colours before welding, so vertices at the same

@@ -1,21 +1,15 @@
 #include "xml_util.h"
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "core/error.h"
+#include "text_file.h"
 #include "text_numbers.h"
 
 namespace foldsketch {
 
 void load_xml(tinyxml2::XMLDocument& doc, const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, std::filesystem::exists(path) ? "cannot open for reading" : "no such file");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
+  const std::string s = read_text_file(path);
   if (doc.Parse(s.data(), s.size()) != tinyxml2::XML_SUCCESS) {
     // tinyxml2's ErrorStr() reads "Error=NAME ErrorID=N (0xN) Line number=L[: detail]"; keep
     // the detail, or say plainly what the error name means.
