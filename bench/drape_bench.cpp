@@ -6,7 +6,9 @@
 // "warm", the pipeline's case: the patterns change a little (here they widen by --ease, as when
 // update-patterns adds ease) and the garment re-drapes from an earlier equilibrium: each of the
 // cold equilibria stored in bench/starts (stored_start.h), so that the start does not move with
-// the solver under test, and the median over them.
+// the solver under test, and the median over them. --flare replaces the widening by a flare let
+// into each panel's middle (bench/pattern_flare.h): extend-patterns' kind of change, after which
+// new folds form.
 //
 // The iteration count of a drape depends on the path its folds take, and that changes with the
 // mesh: cold 20K-triangle skirts near one size took 389 to 914 Newton iterations. So the table
@@ -33,6 +35,7 @@
 #include "sim/drape_solver.h"
 #include "sim/pattern_change.h"
 #include "cli.h"
+#include "pattern_flare.h"
 #include "stored_start.h"
 
 using namespace foldsketch;
@@ -162,7 +165,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> starts{"cold", "warm"};
   std::vector<std::string> presets{"accurate", "fast"};
   std::string material_name;
-  double ease = 0.02;
+  double ease = 0.02, flare = 0.0;
   std::string trajectory_path;
   bool trace = false, no_reference = false, straight_steps = false, no_predictor = false;
   double time_step = DrapeSettings{}.time_step;
@@ -192,7 +195,15 @@ int main(int argc, char** argv) {
   app.add_option("--presets", presets, "solver presets to time")->delimiter(',')->check(CLI::IsMember({"accurate", "fast"}));
   app.add_option("--material", material_name, "fabric preset instead of the skirt sample's (thin cotton)")
       ->check(CLI::IsMember(material_preset_names()));
-  app.add_option("--ease", ease, "warm start: relative widening of every pattern (pattern x)")->check(CLI::PositiveNumber);
+  CLI::Option* ease_option =
+      app.add_option("--ease", ease, "warm start: relative widening of every pattern (pattern x)")->check(CLI::PositiveNumber);
+  app.add_option("--flare", flare,
+                 "warm start: instead of --ease, a flare let into each panel's middle half (bench/pattern_flare.h): its "
+                 "width at the hem grows by this share, the outer quarters turn rigidly, the seams keep their lengths. "
+                 "The pipeline's kind of change (extend-patterns adding width where hemline folds form), where new folds "
+                 "must form")
+      ->check(CLI::PositiveNumber)
+      ->excludes(ease_option);
   app.add_option("--time-step", time_step, "first quasi-static step [s]: the solver's damping starts at 1/h^2")
       ->check(CLI::PositiveNumber);
   app.add_option("--metric", metric,
@@ -250,10 +261,11 @@ int main(int argc, char** argv) {
   app.add_option("--start-count", start_count, "how many starts --write-starts writes per size")->check(CLI::PositiveNumber);
   CLI::Option* coarse_option =
       app.add_option("--coarse", coarse_sizes,
-                     "cold rows: also drape coarse to fine (drape-free --coarse-levels), through the patterns remeshed at "
-                     "these triangle counts (those below the size): each level drapes (accurate preset) from the one "
-                     "before; the row is the garment's own level, its time that of all levels, the median over --runs "
-                     "paths (run r starts from the placement moved by up to 1 um, seed r)")
+                     "also drape coarse to fine (drape-free --coarse-levels), through the patterns remeshed at these "
+                     "triangle counts (those below the size): each level drapes (accurate preset) from the one before; "
+                     "the row is the garment's own level, its time that of all levels, the median over --runs paths (run "
+                     "r starts from the placement, or for a warm row from the start as it is, without the predictor, "
+                     "moved by up to 1 um, seed r)")
           ->delimiter(',')
           ->check(CLI::PositiveNumber);
   app.add_flag("--coarse-to-fine", coarse_auto, "as --coarse, with the levels drape-free --coarse-to-fine picks (coarse_levels)")
@@ -427,15 +439,17 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
     }
   };
-  // Cold drapes coarse to fine (solve_drape_coarse_to_fine, as drape-free --coarse-to-fine):
-  // through the skirt's patterns remeshed at the --coarse triangle counts (or coarse_levels'),
-  // each level draped from the one before; the row is the garment's own level, its time that
-  // of all levels with the remeshing. Run r starts from the sewn placement moved by up to 1 um
-  // (seed r + 1): the cold drape is chaotic, so each run takes its own path, and the median is
-  // over paths (no error column: another path ends in another fold arrangement).
+  // Drapes coarse to fine (solve_drape_coarse_to_fine, as drape-free --coarse-to-fine): through
+  // the garment's patterns remeshed at the --coarse triangle counts (or coarse_levels'), each
+  // level draped from the one before; the row is the garment's own level, its time that of all
+  // levels with the remeshing. Run r starts from `start` (the sewn placement, or a warm start as
+  // it is, without the predictor) moved by up to 1 um (seed r + 1): a drape that forms folds is
+  // chaotic, so each run takes its own path, and the median is over paths (no error column:
+  // another path ends in another fold arrangement).
   std::ofstream c2f_csv;
   if (!c2f_csv_path.empty()) (c2f_csv.open(c2f_csv_path), c2f_csv << header);
-  const auto coarse_to_fine = [&](const ClothModel& model, const SampleScene& sample) {
+  const auto coarse_to_fine = [&](const ClothModel& model, const Garment& garment, const Scene& scene, const MatrixX3d& start,
+                                  const char* kind) {
     const int triangles = static_cast<int>(model.triangles.size());
     std::vector<int> levels = coarse_auto ? coarse_levels(triangles) : std::vector<int>{};
     if (!coarse_auto)
@@ -447,7 +461,7 @@ int main(int argc, char** argv) {
     for (int r = 0; r < runs; ++r) {
       text += (r ? "\n          run " : "run ") + std::to_string(r + 1) + ":";
       const CoarseToFineResult c2f =
-          solve_drape_coarse_to_fine(sample.garment, sample.scene, model, perturbed(sample.garment.V, 1e-6, static_cast<unsigned>(r + 1)),
+          solve_drape_coarse_to_fine(garment, scene, model, perturbed(start, 1e-6, static_cast<unsigned>(r + 1)),
                                      timed_settings(SolverPreset::Accurate), levels, trace ? tracer : DrapeProgress{});
       for (size_t level = 0; level < c2f.levels.size(); ++level) {
         const DrapeStats& d = c2f.levels[level].stats;
@@ -463,7 +477,7 @@ int main(int argc, char** argv) {
     row.seconds = median(seconds);
     print_row(static_cast<long>(model.triangles.size()), "c2f", row);
     std::printf("%9s levels: %s\n", "", text.c_str());
-    record("cold", static_cast<long>(model.triangles.size()), "c2f", row, c2f_csv);
+    record(kind, static_cast<long>(model.triangles.size()), "c2f", row, c2f_csv);
   };
   DrapeSettings reference_settings = defaults;
   reference_settings.tolerance = 1e-9;
@@ -527,22 +541,28 @@ int main(int argc, char** argv) {
       for (const auto& [preset, row] : timed.presets) record("cold", triangles, preset, row, csv);
       if (!reference) previous = timed.drape;
       if (reference) perturb_start(model, sample.garment.V, *reference);
-      if (!coarse_sizes.empty() || coarse_auto) coarse_to_fine(model, sample);
+      if (!coarse_sizes.empty() || coarse_auto) coarse_to_fine(model, sample.garment, sample.scene, sample.garment.V, "cold");
     }
     if (warm) {
-      char title[240];
+      char change_text[80], title[280];
+      if (flare > 0)
+        std::snprintf(change_text, sizeof change_text, "a %.0f %% flare in each panel's middle", 100 * flare);
+      else
+        std::snprintf(change_text, sizeof change_text, "patterns %.0f %% wider", 100 * ease);
       if (warm_starts.empty()) {
         if (previous.rows() == 0) previous = solve_drape(model, sample.garment.V, defaults).V;
         warm_starts.emplace_back("", previous);
-        std::snprintf(title, sizeof title, "warm start: patterns %.0f %% wider, from the previous drape (the cold %s)",
-                      100 * ease, reference ? "reference" : "accurate drape");
+        std::snprintf(title, sizeof title, "warm start: %s, from the previous drape (the cold %s)", change_text,
+                      reference ? "reference" : "accurate drape");
       } else {
-        std::snprintf(title, sizeof title,
-                      "warm start: patterns %.0f %% wider, from each of the %zu stored cold equilibria (%s/skirt-%ld-K.ply)",
-                      100 * ease, warm_starts.size(), warm_from.c_str(), triangles);
+        std::snprintf(title, sizeof title, "warm start: %s, from each of the %zu stored cold equilibria (%s/skirt-%ld-K.ply)",
+                      change_text, warm_starts.size(), warm_from.c_str(), triangles);
       }
       Garment wider = sample.garment;
-      wider.P.col(0) *= 1.0 + ease;
+      if (flare > 0)
+        wider = flared_patterns(sample.garment, flare);
+      else
+        wider.P.col(0) *= 1.0 + ease;
       const ClothModel wider_model = cloth_model_on(wider, sample.scene, model.body, pinned);
       table_header(title);
       std::vector<std::pair<std::string, std::vector<Summary>>> per_preset;  // over the starts
@@ -579,6 +599,7 @@ int main(int argc, char** argv) {
           per_preset[p].second.push_back(timed.presets[p].second);
         }
         if (wider_reference) perturb_start(wider_model, predicted.V, *wider_reference);
+        if (!coarse_sizes.empty() || coarse_auto) coarse_to_fine(wider_model, wider, sample.scene, start, warm_name.c_str());
       }
       if (warm_starts.size() > 1) std::printf("%9s median over the %zu starts (residual, max error: the worst)\n", "", warm_starts.size());
       for (const auto& [preset, all] : per_preset) {
