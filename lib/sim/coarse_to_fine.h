@@ -15,9 +15,11 @@
 // settles its own folds in Newton steps of 0.1-1 mm. The fine triangles that straddle coarse
 // creases are squeezed too (to 0.8 of their pattern size), but relaxing them first
 // (as-rigid-as-possible, to 0.98) saved only 2-6 % of the fine iterations (bench/drape_bench.txt,
-// session 38); nor did more levels help, each spends 100-250 iterations on its own folds. Not
-// for re-drapes: a start that already holds the fine drape's folds would lose them on the
-// coarse level.
+// session 38); nor did more levels help, each spends 100-250 iterations on its own folds. Meant
+// for cold drapes: a start that already holds the fine drape's folds loses them on the coarse
+// level. After a change that forms new folds (a 20 % flare let into each skirt panel,
+// bench/pattern_flare.h) it was still 1.0-2.5 times faster than the plain re-drape at 20K
+// triangles and 0.7-1.2 times at 10K (bench/drape_bench.txt, session 43).
 //
 // Its drape depends far less on the start than a plain cold drape does (bench/drape_bench.txt,
 // session 38; bench/cold_paths.sh): from the sewn placement and the placement moved by up to
