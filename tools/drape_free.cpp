@@ -217,8 +217,9 @@ int main(int argc, char** argv) {
                "depends far less on its start: from starts moved by 1 um its drapes ended 0.004-0.07 mm mean apart "
                "(once 1.5 mm) on the 10K and 20K skirts (bench/cold_paths.sh). Meant for cold drapes: on a "
                "re-drape the coarse levels blur the start's folds; after a large change (a 20 % flare let into "
-               "each panel, drape_bench --flare) it was 1.0-2.5 times faster than the plain re-drape at 20K "
-               "triangles, 0.7-1.2 times at 10K. Not with self-contact or explicit stitches")
+               "each panel, drape_bench --flare) it was 1.0-2.5 times faster than the plain re-drape on the grid "
+               "skirt at 20K triangles, 0.7-1.2 times at 10K and 0.8-1.1 times on the isotropic skirt. Not with "
+               "self-contact or explicit stitches")
       ->excludes(levels_option);
   return run_tool(app, argc, argv, [&] {
     const Scene scene = read_scene_xml(scene_path);

@@ -18,8 +18,9 @@
 // session 38); nor did more levels help, each spends 100-250 iterations on its own folds. Meant
 // for cold drapes: a start that already holds the fine drape's folds loses them on the coarse
 // level. After a change that forms new folds (a 20 % flare let into each skirt panel,
-// bench/pattern_flare.h) it was still 1.0-2.5 times faster than the plain re-drape at 20K
-// triangles and 0.7-1.2 times at 10K (bench/drape_bench.txt, session 43).
+// bench/pattern_flare.h) it was 1.0-2.5 times faster than the plain re-drape on the grid skirt
+// at 20K triangles, but 0.7-1.2 times at 10K and 0.8-1.1 times on the isotropic skirt
+// (bench/drape_bench.txt, session 43).
 //
 // Its drape depends far less on the start than a plain cold drape does (bench/drape_bench.txt,
 // session 38; bench/cold_paths.sh): from the sewn placement and the placement moved by up to
