@@ -109,6 +109,7 @@ std::string json(const DrapeStats& s, double tolerance, const std::string& outpu
   j.key("output").value(written ? output : "").key("steps").value(s.steps).key("newton_iterations").value(s.newton_iterations);
   j.key("projected_iterations").value(s.projected_iterations);
   j.key("factorizations").value(s.factorizations).key("double_precision_fallback").value(s.double_precision_fallback);
+  j.key("rescue_iterations").value(s.rescue_iterations).key("indefinite_solves").value(s.indefinite_solves);
   j.key("residual").value(s.residual).key("tolerance").value(tolerance);
   j.key("energy_J").begin_object().key("membrane").value(s.energy.membrane).key("bending").value(s.energy.bending);
   j.key("gravity").value(s.energy.gravity).key("stitches").value(s.energy.stitches).key("contact").value(s.energy.contact);
@@ -195,6 +196,11 @@ int main(int argc, char** argv) {
   app.add_option("--membrane-hessian", membrane_hessian, "accurate preset's triangle Hessian (for measurements)")
       ->check(CLI::IsMember({"projected", "gauss-newton", "exact"}));
   app.add_flag("--write-unconverged", write_unconverged, "write the drape even when it did not converge");
+  bool no_rescue = false;
+  app.add_flag("--no-rescue", no_rescue,
+               "take a single-precision solve that one refinement leaves inaccurate as a reason to factorise in double "
+               "precision from there on, without first trying conjugate gradients preconditioned by the factor "
+               "(DrapeSettings::rescue_iterations; for measurements)");
   bool no_predictor = false;
   app.add_flag("--no-predictor", no_predictor, "start from --init as it is, even when its patterns differ (for measurements)");
   bool coarse_to_fine = false;
@@ -276,6 +282,7 @@ int main(int argc, char** argv) {
     if (!membrane_hessian.empty()) settings.membrane_hessian = hessian_kind(membrane_hessian);
     if (straight_steps) settings.curved_steps = false;
     if (plain_metric) settings.stress_metric_reference = 0.0;
+    if (no_rescue) settings.rescue_iterations = 0;
     const bool terminal = ::isatty(STDERR_FILENO);
     const DrapeProgress progress = [&](const DrapeStats& s, const MatrixX3d& x) {
       if (trace)

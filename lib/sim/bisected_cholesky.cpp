@@ -242,6 +242,7 @@ VectorXd BisectedCholesky::solve(const VectorXd& b) const {
   VectorXd x = solve_once(b);
   last_relative_residual_ = 0;
   last_solve_trusted_ = true;
+  last_solve_indefinite_ = false;
   if (!state_->single) return x;
   const auto A = state_->matrix.selfadjointView<Eigen::Lower>();
   VectorXd r = b - A * x;
@@ -249,8 +250,36 @@ VectorXd BisectedCholesky::solve(const VectorXd& b) const {
     x += solve_once(r);
     r = b - A * x;
   }
-  const double scale = b.norm();
-  last_relative_residual_ = scale > 0 ? r.norm() / scale : r.norm();
+  const double scale = b.norm() > 0 ? b.norm() : 1.0;
+  last_relative_residual_ = r.norm() / scale;
+  if (last_relative_residual_ > kSingleSolveResidual && settings_.rescue_iterations > 0) {
+    // The refinement did not get there (near-singular systems, where it may even diverge):
+    // conjugate gradients preconditioned by the single-precision factor, which is positive
+    // definite, converge where the refinement's fixed-point iteration does not.
+    VectorXd z = solve_once(r), p = z;
+    double rz = r.dot(z);
+    for (int k = 0; k < settings_.rescue_iterations && last_relative_residual_ > kRescuedSolveResidual; ++k) {
+      const VectorXd Ap = A * p;
+      const double pAp = p.dot(Ap);
+      if (!(pAp > 0.0) || !(rz > 0.0)) {
+        // A direction of negative curvature: the matrix is not positive definite, and the
+        // single-precision factorisation's rounding let it pass.
+        last_solve_indefinite_ = true;
+        break;
+      }
+      const double step = rz / pAp;
+      x += step * p;
+      r -= step * Ap;
+      last_relative_residual_ = r.norm() / scale;
+      z = solve_once(r);
+      const double rz_next = r.dot(z);
+      p = z + (rz_next / rz) * p;
+      rz = rz_next;
+      ++rescue_iterations_;
+    }
+    r = b - A * x;  // the true residual, not the recurrence's
+    last_relative_residual_ = r.norm() / scale;
+  }
   last_solve_trusted_ = last_relative_residual_ <= kSingleSolveResidual && b.dot(x) > 0.0;
   return x;
 }

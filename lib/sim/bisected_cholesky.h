@@ -28,6 +28,10 @@ namespace foldsketch {
 // most 4e-4 (median 1e-6); the physics tests' stiff membranes under light loads: 0.3-12, i.e.
 // no solve at all.
 constexpr double kSingleSolveResidual = 1e-2;
+// A solve whose refinement misses kSingleSolveResidual is rescued by conjugate gradients
+// (BisectedSettings::rescue_iterations) down to this relative residual, the median refined
+// residual of the 20K skirt's re-drapes (our choice: a Newton step needs no more).
+constexpr double kRescuedSolveResidual = 1e-6;
 
 struct BisectedSettings {
   // Below this many unknowns, one factorisation on one thread. The skirt drapes measured with
@@ -42,6 +46,12 @@ struct BisectedSettings {
   // refined in double precision against the factorised matrix this many times.
   FactorPrecision precision = FactorPrecision::Double;
   int refinements = 1;
+  // When the refined residual still exceeds kSingleSolveResidual: at most this many conjugate
+  // gradient iterations preconditioned by the factor before the solve is not trusted (each
+  // costs one solve, about a twentieth of a factorisation at 20K triangles). The 20K skirt's
+  // cold drape fell back to double precision at its 196th solve, where the refinement
+  // diverged (0.026, 0.033, 0.038, ...), and every factorisation after it took twice as long.
+  int rescue_iterations = 30;
 };
 
 class BisectedCholesky {
@@ -70,13 +80,21 @@ public:
   // so at a refined residual of 0.0096). Its callers then factorise in double precision.
   // Always true in double precision.
   bool last_solve_trusted() const { return last_solve_trusted_; }
+  // Whether the last solve found the factorised matrix not positive definite (a direction of
+  // negative curvature in the rescue's conjugate gradients): a single-precision factorisation
+  // can succeed on a matrix whose smallest eigenvalue is negative but below its rounding. The
+  // solve is then not trusted, and its callers treat the factorisation as failed.
+  bool last_solve_indefinite() const { return last_solve_indefinite_; }
   // Takes effect at the next factorisation; the analysis is kept.
   void set_precision(FactorPrecision precision) { settings_.precision = precision; }
   FactorPrecision precision() const { return settings_.precision; }
+  void set_rescue_iterations(int iterations) { settings_.rescue_iterations = iterations; }
 
   bool split() const;        // factorised as two halves (else whole)
   int separator_size() const;
   int factorizations() const { return factorizations_; }
+  // Conjugate gradient iterations spent rescuing single-precision solves (rescue_iterations).
+  int rescue_iterations() const { return rescue_iterations_; }
   double analyze_seconds() const { return analyze_seconds_; }
   double factorize_seconds() const { return factorize_seconds_; }
   double solve_seconds() const { return solve_seconds_; }
@@ -91,6 +109,8 @@ private:
   mutable double solve_seconds_ = 0;
   mutable double last_relative_residual_ = 0;
   mutable bool last_solve_trusted_ = true;
+  mutable int rescue_iterations_ = 0;
+  mutable bool last_solve_indefinite_ = false;
 };
 
 } // namespace foldsketch

@@ -200,12 +200,19 @@ struct DrapeSettings {
   // The Newton systems' factorisation (BisectedCholesky): Single factorises in single
   // precision (lib/sim/supernodal_single.h) and refines each solve once in double; a solve
   // whose refined residual still misses (the system too ill-conditioned, as with a stiff
-  // membrane under a light load) switches the rest of the solve to double precision
+  // membrane under a light load) is rescued by up to rescue_iterations conjugate-gradient
+  // iterations preconditioned by the factor (BisectedSettings::rescue_iterations); one whose
+  // rescue finds negative curvature counts as a failed factorisation (more damping); one that
+  // the rescue leaves inaccurate switches the rest of the solve to double precision
   // (DrapeStats::double_precision_fallback). The stability check's verdict is always reached in
   // double precision. Measured (bench/drape_bench.txt, 2026-12-07): 20K-triangle skirt, 2 %
   // re-drapes from the 3 stored starts 6.77 -> 4.78 s median, the same Newton iterations
   // (62 / 74 / 56 -> 61 / 78 / 56); cold 34.5 -> 26.0 s; a factorisation 69 -> 38 ms.
   FactorPrecision factor_precision = FactorPrecision::Single;
+  // 0 turns the rescue off (for measurements). Measured (bench/drape_bench.txt, 2026-12-07,
+  // session 46): the 20K skirt's cold drape no longer falls back to double precision at its
+  // 196th solve, where the single factor had passed an indefinite matrix.
+  int rescue_iterations = 30;
 };
 
 DrapeSettings drape_settings(const SimulatorSettings& scene);
@@ -251,6 +258,8 @@ struct DrapeStats {
   int saddle_escapes = 0;           // saddles left along their negative curvature on the way
   double lowest_curvature = 0;      // Unstable: the most negative eigenvalue of M^-1 H [1/s^2]
   bool double_precision_fallback = false;  // single-precision factors gave no usable step; double from then on
+  int rescue_iterations = 0;        // conjugate-gradient iterations rescuing single-precision solves
+  int indefinite_solves = 0;        // single-precision factors of matrices the rescue found indefinite
   std::string message;              // why it stopped, in words
   bool out_of_steps = false;        // stopped by max_steps, not converged (the energy was still falling)
   bool stopped_at_budget = false;   // stopped by DrapeSettings::newton_budget, as asked (not converged)
