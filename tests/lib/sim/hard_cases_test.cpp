@@ -136,9 +136,9 @@ TEST(HardCases, SheetSettlesIntoAConcaveCreaseOfTheBody) {
 }
 
 // The 54K-triangle skirt, the size of the thesis's largest garment, draped from its sewn
-// placement around the body. The slowest test: about 6 minutes on 2 cores beside the rest of
-// the suite (364 s in a clean-clone run; bench/drape_bench.txt: 319 s alone, before the C1
-// body contact).
+// placement around the body. The slowest test: 82 s on 2 cores beside the rest of the suite
+// in session 46's clean-clone run (364 s before the single-precision factorisation and the C1
+// body contact; bench/drape_bench.txt).
 TEST(HardCases, FiftyFourThousandTriangleSkirtDrapes) {
   const test::SkirtOnBody s = test::skirt_on_body(54000);
   ASSERT_GT(s.model.triangles.size(), 52000u);
