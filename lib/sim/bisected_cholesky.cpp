@@ -250,7 +250,8 @@ VectorXd BisectedCholesky::solve(const VectorXd& b) const {
     x += solve_once(r);
     r = b - A * x;
   }
-  const double scale = b.norm() > 0 ? b.norm() : 1.0;
+  const double b_norm = b.norm();
+  const double scale = b_norm > 0 ? b_norm : 1.0;
   last_relative_residual_ = r.norm() / scale;
   if (last_relative_residual_ > kSingleSolveResidual && settings_.rescue_iterations > 0) {
     // The refinement did not get there (near-singular systems, where it may even diverge):
@@ -280,7 +281,7 @@ VectorXd BisectedCholesky::solve(const VectorXd& b) const {
     r = b - A * x;  // the true residual, not the recurrence's
     last_relative_residual_ = r.norm() / scale;
   }
-  last_solve_trusted_ = last_relative_residual_ <= kSingleSolveResidual && b.dot(x) > 0.0;
+  last_solve_trusted_ = !last_solve_indefinite_ && last_relative_residual_ <= kSingleSolveResidual && b.dot(x) > 0.0;
   return x;
 }
 

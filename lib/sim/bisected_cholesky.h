@@ -74,10 +74,12 @@ public:
   // |b - A x| / |b| of the last solve: computed only for single-precision factors (after
   // their refinements), 0 otherwise.
   double last_relative_residual() const { return last_relative_residual_; }
-  // Whether the last solve can be used: false for a single-precision one whose refined residual
-  // exceeds kSingleSolveResidual, or which does not even point along its right-hand side (b^T x
+  // Whether the last solve can be used: false for a single-precision one whose refined (and
+  // rescued) residual exceeds kSingleSolveResidual, whose matrix the rescue found indefinite
+  // (last_solve_indefinite), or which does not even point along its right-hand side (b^T x
   // <= 0, impossible for a positive definite A: the stiff catenary strip's Newton step once did
-  // so at a refined residual of 0.0096). Its callers then factorise in double precision.
+  // so at a refined residual of 0.0096). Its callers then factorise in double precision, or,
+  // for an indefinite matrix, treat the factorisation as refused.
   // Always true in double precision.
   bool last_solve_trusted() const { return last_solve_trusted_; }
   // Whether the last solve found the factorised matrix not positive definite (a direction of

@@ -177,7 +177,6 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
 
   BisectedSettings factor_settings;
   factor_settings.precision = settings.factor_precision;
-  factor_settings.rescue_iterations = settings.rescue_iterations;
   BisectedCholesky own_factorisation(factor_settings);
   BisectedCholesky& cholesky = factorisation ? *factorisation : own_factorisation;
   cholesky.set_precision(settings.factor_precision);
@@ -274,6 +273,21 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
   // in A (just assembled). Returns false when no step lowered Phi.
   double applied_damping = 0.0;  // damping already added to A since its assembly
   // phi: Phi(x), known to the caller from the evaluation that gave g.
+  // The damped Hessian in A is not positive definite: projected membrane elements at the same
+  // damping first (while the fallback is allowed), else more damping on the same Hessian.
+  // False when the damping has exceeded its bound.
+  const auto not_definite = [&]() {
+    factor_current = false;
+    if (fallback_allowed && membrane_now == HessianKind::Exact && stats.projected_iterations < settings.membrane_fallback_budget) {
+      membrane_now = HessianKind::Projected;
+      fallback_left = settings.membrane_fallback_iterations;
+      evaluate(x, nullptr, &A);
+      applied_damping = 0.0;
+      return true;
+    }
+    damping *= 10.0;
+    return damping <= kMaxDamping;
+  };
   const auto newton_iteration = [&](VectorXd& g, double phi) {
     applied_damping = 0.0;
     for (int attempt = 0; attempt < 60; ++attempt) {
@@ -283,33 +297,21 @@ DrapeResult solve_drape(const ClothModel& model, const MatrixX3d& initial, const
         if (laplacian_metric) energy.add_laplacian(A, metric_laplacian * (mass_term - applied_damping), weights);
         applied_damping = mass_term;
         factor_current = cholesky.factorize(A);
-        if (!factor_current && fallback_allowed && membrane_now == HessianKind::Exact &&
-            stats.projected_iterations < settings.membrane_fallback_budget) {
-          // Not positive definite: the same damping with projected membrane elements first.
-          membrane_now = HessianKind::Projected;
-          fallback_left = settings.membrane_fallback_iterations;
-          evaluate(x, nullptr, &A);
-          applied_damping = 0.0;
-          continue;
-        }
-        if (!factor_current) {  // not positive definite: more damping on the same Hessian
-          damping *= 10.0;
-          if (damping > kMaxDamping) return false;
+        if (!factor_current) {
+          if (!not_definite()) return false;
           continue;
         }
       }
       ++stats.newton_iterations;
       if (membrane_now != membrane_kind) ++stats.projected_iterations;
       VectorXd dx = cholesky.solve(-g);
-      if (!cholesky.last_solve_trusted() && cholesky.last_solve_indefinite()) {
+      if (cholesky.last_solve_indefinite()) {
         // The single-precision factorisation passed a matrix that is not positive definite
-        // (its rescue found negative curvature): as a failed factorisation, more damping.
-        // Before this, such a solve switched to double precision for the rest of the drape,
-        // whose factorisations take twice as long (the 20K skirt's cold drape, from its 196th).
+        // (its rescue found negative curvature): as a refused factorisation. Before this, such
+        // a solve switched to double precision for the rest of the drape, whose factorisations
+        // take twice as long (the 20K skirt's cold drape, from its 196th).
         ++stats.indefinite_solves;
-        factor_current = false;
-        damping *= 10.0;
-        if (damping > kMaxDamping) return false;
+        if (!not_definite()) return false;
         continue;
       }
       if (!cholesky.last_solve_trusted()) {

@@ -212,7 +212,7 @@ struct DrapeSettings {
   // 0 turns the rescue off (for measurements). Measured (bench/drape_bench.txt, 2026-12-07,
   // session 46): the 20K skirt's cold drape no longer falls back to double precision at its
   // 196th solve, where the single factor had passed an indefinite matrix.
-  int rescue_iterations = 30;
+  int rescue_iterations = BisectedSettings{}.rescue_iterations;
 };
 
 DrapeSettings drape_settings(const SimulatorSettings& scene);
