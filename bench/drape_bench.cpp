@@ -23,12 +23,14 @@
 #include <limits>
 #include <optional>
 #include <random>
-#include <string>
 #include <sstream>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "formats/atomic_file.h"
 #include "formats/body_mesh.h"
 #include "samples/sample_scenes.h"
 #include "sim/coarse_to_fine.h"
@@ -79,6 +81,19 @@ MatrixX3d perturbed(const MatrixX3d& start, double amplitude, unsigned seed) {
     for (int c = 0; c < 3; ++c) x(v, c) += amplitude * (2 * static_cast<double>(random()) / 4294967295.0 - 1);
   return x;
 }
+
+// A CSV to write at the end of a successful run (no path: not asked for, nothing written).
+struct CsvFile {
+  std::string path;
+  std::ostringstream text;
+  CsvFile(std::string to, const char* header) : path(std::move(to)) {
+    if (is_open()) text << header;
+  }
+  bool is_open() const { return !path.empty(); }
+  void write() const {
+    if (is_open()) write_file_atomically(path, [&](std::ostream& out) { out << text.str(); });
+  }
+};
 
 struct Row {  // one timed preset at one size, for the cost growth
   std::string start, preset;
@@ -307,12 +322,10 @@ int main(int argc, char** argv) {
   }
   // stopped_at_budget: the Fast preset's re-drape budget ended the solve (converged 0).
   const char* header = "triangles,preset,median_s,newton_iterations,factorizations,factorization_share,residual,mean_error_mm,max_error_mm,converged,stopped_at_budget\n";
-  std::ofstream csv, warm_csv;
-  if (cold && !csv_path.empty()) (csv.open(csv_path), csv << header);
-  if (warm && !warm_csv_path.empty()) (warm_csv.open(warm_csv_path), warm_csv << header);
-  std::ofstream trajectory;
-  if (!trajectory_path.empty())
-    (trajectory.open(trajectory_path), trajectory << "start,triangles,preset,newton_iterations,seconds,residual,mean_error_mm,max_error_mm,mean_move_mm,damping,step_fraction\n");
+  // Each CSV is collected here and written (through a temporary file and a rename) only when the
+  // whole run has succeeded: a failed or interrupted run leaves the committed files as they were.
+  CsvFile csv(cold ? csv_path : "", header), warm_csv(warm ? warm_csv_path : "", header);
+  CsvFile trajectory(trajectory_path, "start,triangles,preset,newton_iterations,seconds,residual,mean_error_mm,max_error_mm,mean_move_mm,damping,step_fraction\n");
   std::vector<Row> rows;
   // What every timed drape (and the perturbed ones) solves with.
   const auto timed_settings = [&](SolverPreset preset) {
@@ -328,9 +341,9 @@ int main(int argc, char** argv) {
   };
   // One line of the CSV `out` and one row of the cost growth.
   const auto record = [&](const char* start_name, long triangles, const std::string& preset, const Summary& s,
-                          std::ofstream& out) {
-    if (out.is_open())
-      out << triangles << ',' << preset << ',' << s.seconds << ',' << s.iterations << ',' << s.factorizations << ','
+                          CsvFile& csv_file) {
+    if (csv_file.is_open())
+      csv_file.text << triangles << ',' << preset << ',' << s.seconds << ',' << s.iterations << ',' << s.factorizations << ','
           << s.share << ',' << s.residual << ',' << (s.has_error ? (std::ostringstream() << s.error.mean).str() : "") << ','
           << (s.has_error ? (std::ostringstream() << s.error.max).str() : "") << ',' << (s.converged ? 1 : 0) << ','
           << (s.budget ? 1 : 0) << '\n';
@@ -392,10 +405,10 @@ int main(int argc, char** argv) {
       timed.presets.emplace_back(to_string(preset), row);
       if (follow) {
         for (const Point& p : along) {
-          trajectory << start_name << ',' << model.triangles.size() << ',' << to_string(preset) << ',' << p.iterations << ','
+          trajectory.text << start_name << ',' << model.triangles.size() << ',' << to_string(preset) << ',' << p.iterations << ','
                      << p.seconds << ',';
-          if (std::isfinite(p.residual)) trajectory << p.residual;
-          trajectory << ',' << p.error.mean << ',' << p.error.max << ',' << p.move << ',' << p.damping << ',' << p.fraction << '\n';
+          if (std::isfinite(p.residual)) trajectory.text << p.residual;
+          trajectory.text << ',' << p.error.mean << ',' << p.error.max << ',' << p.move << ',' << p.damping << ',' << p.fraction << '\n';
         }
         // The first moment the error fell to each bound (it may rise again later).
         std::printf("%9s along the solve: start %.2f mm mean, %.2f mm max", "", along.front().error.mean, along.front().error.max);
@@ -446,8 +459,7 @@ int main(int argc, char** argv) {
   // it is, without the predictor) moved by up to 1 um (seed r + 1): a drape that forms folds is
   // chaotic, so each run takes its own path, and the median is over paths (no error column:
   // another path ends in another fold arrangement).
-  std::ofstream c2f_csv;
-  if (!c2f_csv_path.empty()) (c2f_csv.open(c2f_csv_path), c2f_csv << header);
+  CsvFile c2f_csv(c2f_csv_path, header);
   // Returns the row (printed here; the caller records it).
   const auto coarse_to_fine = [&](const ClothModel& model, const Garment& garment, const Scene& scene, const MatrixX3d& start) {
     const int triangles = static_cast<int>(model.triangles.size());
@@ -612,7 +624,7 @@ int main(int argc, char** argv) {
       if (!c2f_rows.empty()) {
         const Summary row = c2f_rows.size() > 1 ? median_summary(c2f_rows) : c2f_rows.front();
         if (c2f_rows.size() > 1) print_row(triangles, "c2f", row);
-        std::ofstream no_csv;  // printed and fitted, not written: --c2f-csv holds the cold rows the plot draws
+        CsvFile no_csv("", "");  // printed and fitted, not written: --c2f-csv holds the cold rows the plot draws
         record("warm", triangles, "c2f", row, no_csv);
       }
       if (start_errors.size() > 1) {
@@ -642,5 +654,11 @@ int main(int argc, char** argv) {
                   preset.c_str(), n.size(), growth_exponent(n, seconds), growth_exponent(n, iterations),
                   growth_exponent(n, per_iteration));
     }
+  try {
+    for (const CsvFile* f : {&csv, &warm_csv, &trajectory, &c2f_csv}) f->write();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "drape_bench: %s\n", e.what());
+    return 1;
+  }
   return 0;
 }
