@@ -339,11 +339,11 @@ int main(int argc, char** argv) {
     std::printf("%s\n%9s %-9s %10s %7s %8s %8s %9s %10s %10s\n", title, "triangles", "preset", "median [s]", "Newton", "factor.",
                 "factor.%", "residual", "mean [mm]", "max [mm]");
   };
-  // One line of the CSV `out` and one row of the cost growth.
+  // One line of the CSV `out` (none: printed and fitted only) and one row of the cost growth.
   const auto record = [&](const char* start_name, long triangles, const std::string& preset, const Summary& s,
-                          CsvFile& csv_file) {
-    if (csv_file.is_open())
-      csv_file.text << triangles << ',' << preset << ',' << s.seconds << ',' << s.iterations << ',' << s.factorizations << ','
+                          CsvFile* out) {
+    if (out && out->is_open())
+      out->text << triangles << ',' << preset << ',' << s.seconds << ',' << s.iterations << ',' << s.factorizations << ','
           << s.share << ',' << s.residual << ',' << (s.has_error ? (std::ostringstream() << s.error.mean).str() : "") << ','
           << (s.has_error ? (std::ostringstream() << s.error.max).str() : "") << ',' << (s.converged ? 1 : 0) << ','
           << (s.budget ? 1 : 0) << '\n';
@@ -550,11 +550,11 @@ int main(int argc, char** argv) {
     if (cold) {
       table_header("cold start: from the sewn placement");
       const Timed timed = time_presets("cold", model, sample.garment.V, reference ? &*reference : nullptr);
-      for (const auto& [preset, row] : timed.presets) record("cold", triangles, preset, row, csv);
+      for (const auto& [preset, row] : timed.presets) record("cold", triangles, preset, row, &csv);
       if (!reference) previous = timed.drape;
       if (reference) perturb_start(model, sample.garment.V, *reference);
       if (!coarse_sizes.empty() || coarse_auto)
-        record("cold", triangles, "c2f", coarse_to_fine(model, sample.garment, sample.scene, sample.garment.V), c2f_csv);
+        record("cold", triangles, "c2f", coarse_to_fine(model, sample.garment, sample.scene, sample.garment.V), &c2f_csv);
     }
     if (warm) {
       char change_text[80], title[280];
@@ -619,13 +619,13 @@ int main(int argc, char** argv) {
       for (const auto& [preset, all] : per_preset) {
         const Summary row = all.size() > 1 ? median_summary(all) : all.front();
         if (all.size() > 1) print_row(triangles, preset, row);
-        record("warm", triangles, preset, row, warm_csv);
+        record("warm", triangles, preset, row, &warm_csv);
       }
       if (!c2f_rows.empty()) {
         const Summary row = c2f_rows.size() > 1 ? median_summary(c2f_rows) : c2f_rows.front();
         if (c2f_rows.size() > 1) print_row(triangles, "c2f", row);
-        CsvFile no_csv("", "");  // printed and fitted, not written: --c2f-csv holds the cold rows the plot draws
-        record("warm", triangles, "c2f", row, no_csv);
+        // Printed and fitted, not written: --c2f-csv holds the cold rows the plot draws.
+        record("warm", triangles, "c2f", row, nullptr);
       }
       if (start_errors.size() > 1) {
         std::vector<double> means;
